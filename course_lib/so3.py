@@ -1,0 +1,760 @@
+r"""Numeric SO(3): the hat map, Rodrigues' formula, the logarithm and membership checks.
+
+Notation follows the course notes (section 0.1): :math:`\hat{w}` is the skew matrix of
+:math:`w` (Definition 5), :math:`e^{\hat\omega\theta}` the rotation by :math:`\theta` about the
+unit axis :math:`\omega` (eq. 127, closed by Rodrigues' formula, eq. 159), and
+
+.. math:: SO(3) = \{R \in \mathbb{R}^{3\times 3} \mid R^T R = I,\ \det R = 1\}.
+
+Every function takes array-likes (lists too), computes in float64 and broadcasts over leading
+axes: vectors have shape ``(..., 3)`` and matrices ``(..., 3, 3)``. Checks use the tolerance
+policy of :mod:`course_lib.tolerance`.
+
+Accuracy. ``exp`` and ``log`` are written to be accurate to a few units in the last place for
+*every* angle, including the places where textbook implementations fail: angles within 1e-12 of
+0 and of :math:`\pi`, and exactly :math:`\pi` about an axis with mixed signs. ``log`` takes the
+angle from :math:`\operatorname{atan2}(\sin\theta, \cos\theta)`, never from an arccos, and for
+angles above 90° takes the axis from the symmetric part of R (well conditioned there) and only
+its sign from the skew part.
+
+Speed. Batches are processed in cache-sized chunks with the nine matrix entries laid out as
+contiguous rows, so a million rotations take a few tens of milliseconds
+(``benchmarks/bench_so3.py`` measures this against scipy).
+"""
+
+import numpy as np
+
+from ._arrays import (
+    as_angles,
+    as_count,
+    as_float_array,
+    as_matrices,
+    as_square_matrices,
+    as_vectors,
+)
+from .tolerance import TOL
+
+__all__ = [
+    "hat",
+    "vee",
+    "exp",
+    "log",
+    "axis_angle",
+    "exp_series",
+    "rot_x",
+    "rot_y",
+    "rot_z",
+    "is_rotation",
+    "check_rotation",
+    "random_rotations",
+    "angle_between",
+]
+
+# Elements per chunk: 9 rows of this many float64 stay well inside the L2 cache.
+_CHUNK = 8192
+# Below this, sin θ is treated as 0 (θ / sin θ = 1); keeps every division finite.
+_TINY = 1e-290
+
+
+def hat(w):
+    r"""The hat map (Definition 5): the skew-symmetric matrix of a 3-vector.
+
+    .. math::
+
+        \hat{w} = \begin{bmatrix} 0 & -w_3 & w_2 \\ w_3 & 0 & -w_1 \\ -w_2 & w_1 & 0
+        \end{bmatrix}, \qquad \hat{w}\, v = w \times v.
+
+    Parameters
+    ----------
+    w : array_like, shape (..., 3)
+        One vector or a batch of vectors.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Raises
+    ------
+    ValueError
+        If the last axis does not have length 3, or ``w`` holds NaN or infinity.
+    TypeError
+        If ``w`` is not numeric.
+
+    Examples
+    --------
+    >>> hat([1, 2, 3])
+    array([[ 0., -3.,  2.],
+           [ 3.,  0., -1.],
+           [-2.,  1.,  0.]])
+    >>> v = np.array([4.0, 5.0, 6.0])
+    >>> np.allclose(hat([1, 2, 3]) @ v, np.cross([1, 2, 3], v))
+    True
+    """
+    w = as_vectors(w, "w")
+    W = np.zeros(w.shape + (3,))
+    W[..., 0, 1] = -w[..., 2]
+    W[..., 0, 2] = w[..., 1]
+    W[..., 1, 0] = w[..., 2]
+    W[..., 1, 2] = -w[..., 0]
+    W[..., 2, 0] = -w[..., 1]
+    W[..., 2, 1] = w[..., 0]
+    return W
+
+
+def vee(W, tol=TOL):
+    r"""The inverse of the hat map: the vector of a skew-symmetric matrix.
+
+    .. math::
+
+        \begin{bmatrix} 0 & -w_3 & w_2 \\ w_3 & 0 & -w_1 \\ -w_2 & w_1 & 0 \end{bmatrix}^\vee
+        = \begin{bmatrix} w_1 \\ w_2 \\ w_3 \end{bmatrix}
+
+    The entries are read from the skew part :math:`\tfrac12 (W - W^T)`.
+
+    Parameters
+    ----------
+    W : array_like, shape (..., 3, 3)
+        Skew-symmetric matrices, :math:`W^T = -W` within ``tol``.
+    tol : float
+        Allowed :math:`\|W + W^T\|_F`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+
+    Raises
+    ------
+    ValueError
+        If a matrix is not skew-symmetric (the message gives :math:`\|W + W^T\|_F`), or the
+        shape is not (..., 3, 3).
+
+    Examples
+    --------
+    >>> vee(hat([1, 2, 3]))
+    array([1., 2., 3.])
+    """
+    W = as_matrices(W, "W")
+    sym = np.linalg.norm(W + np.swapaxes(W, -1, -2), axis=(-2, -1))
+    if not np.all(sym <= tol):
+        worst = np.unravel_index(np.argmax(sym), sym.shape) if sym.ndim else ()
+        raise ValueError(
+            f"W is not skew-symmetric: ‖W + Wᵀ‖ = {float(sym[worst]):.1e} > tol = {tol:.0e}"
+            + (f" (at batch index {tuple(int(i) for i in worst)})" if worst else "")
+            + "; vee expects a matrix of so(3), Wᵀ = −W, such as hat(w)"
+        )
+    return 0.5 * np.stack(
+        [W[..., 2, 1] - W[..., 1, 2], W[..., 0, 2] - W[..., 2, 0], W[..., 1, 0] - W[..., 0, 1]],
+        axis=-1,
+    )
+
+
+def _exp_rows(x, y, z, out):
+    """Rodrigues' formula on rotation-vector rows, written into the 9 rows of ``out``.
+
+    Written with the half angle h = θ/2, v = sin h ω and q₀ = cos h, so that nothing cancels:
+    sin θ ω̂ = 2 q₀ v̂ and (1 − cos θ) ω̂² = 2 v̂², hence
+    R = I + 2 q₀ v̂ + 2 v̂² with v̂² = v vᵀ − ‖v‖² I.
+    """
+    theta2 = x * x
+    theta2 += y * y
+    theta2 += z * z
+    theta = np.sqrt(theta2)
+    zero = theta == 0.0
+    if zero.any() and (x[zero].any() or y[zero].any() or z[zero].any()):
+        # θ² underflowed for a rotation vector below 1e-154: recompute θ without squaring.
+        r = np.stack([x[zero], y[zero], z[zero]])
+        big = np.abs(r).max(axis=0)
+        theta[zero] = big * np.sqrt(((r / np.where(big > 0, big, 1.0)) ** 2).sum(axis=0))
+        zero = theta == 0.0
+    half = 0.5 * theta
+    sh, q0 = np.sin(half), np.cos(half)
+    theta += zero  # at θ = 0 exactly r = 0, so g's value does not matter: keep it finite
+    g = sh / theta
+    vx, vy, vz = g * x, g * y, g * z  # v = sin h ω, the quaternion's vector part
+    g += g
+    ux, uy, uz = g * x, g * y, g * z  # u = 2v carries the factor 2 of 2 q₀ v̂ + 2 v̂²
+    xx, yy, zz = ux * vx, uy * vy, uz * vz
+    xy, xz, yz = ux * vy, ux * vz, uy * vz
+    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
+    np.subtract(1.0, yy + zz, out=out[0])
+    np.subtract(xy, wz, out=out[1])
+    np.add(xz, wy, out=out[2])
+    np.add(xy, wz, out=out[3])
+    np.subtract(1.0, xx + zz, out=out[4])
+    np.subtract(yz, wx, out=out[5])
+    np.subtract(xz, wy, out=out[6])
+    np.add(yz, wx, out=out[7])
+    np.subtract(1.0, xx + yy, out=out[8])
+
+
+def _exp_rotvec(r):
+    """exp of rotation vectors r (..., 3) -> (..., 3, 3), processed in chunks."""
+    batch = r.shape[:-1]
+    flat = r.reshape(-1, 3)
+    n = flat.shape[0]
+    out = np.empty((n, 9))
+    buf = np.empty((9, min(n, _CHUNK)))
+    for start in range(0, n, _CHUNK):
+        stop = min(start + _CHUNK, n)
+        rows = flat[start:stop].T
+        b = buf[:, : stop - start]
+        _exp_rows(rows[0], rows[1], rows[2], b)
+        out[start:stop] = b.T
+    return out.reshape(batch + (3, 3))
+
+
+def exp(w, theta=None):
+    r"""Rodrigues' formula: the rotation matrix :math:`e^{\hat\omega\theta}`.
+
+    With one argument, ``w`` is a rotation vector :math:`r = \omega\theta` (unit axis times
+    angle, the exponential coordinates of the rotation) and
+
+    .. math::
+
+        e^{\hat r} = I + \frac{\sin\|r\|}{\|r\|}\hat r + \frac{1-\cos\|r\|}{\|r\|^2}\hat r^2 .
+
+    With ``theta``, ``w`` must be a unit axis :math:`\omega` and the result is the notes'
+    :math:`R(\omega, \theta) = e^{\hat\omega\theta}
+    = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2` (eq. 159).
+
+    Parameters
+    ----------
+    w : array_like, shape (..., 3)
+        Rotation vectors, or unit axes when ``theta`` is given.
+    theta : array_like, optional
+        Angles in radians, broadcast against the batch shape of ``w``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        Rotation matrices, orthogonal to a few machine epsilons.
+
+    Raises
+    ------
+    ValueError
+        If ``theta`` is given and an axis is not a unit vector (the message gives its norm),
+        if a shape is wrong, or an input holds NaN or infinity.
+
+    Examples
+    --------
+    A quarter turn about z takes x to y:
+
+    >>> R = exp([0, 0, 1], np.pi / 2)
+    >>> np.round(R @ [1, 0, 0], 12)
+    array([0., 1., 0.])
+    >>> np.allclose(exp([0, 0, np.pi / 2]), R)
+    True
+    """
+    w = as_vectors(w, "w")
+    if theta is None:
+        return _exp_rotvec(w)
+    theta = as_angles(theta, "theta")
+    norm = np.linalg.norm(w, axis=-1)
+    off = np.abs(norm - 1.0)
+    if not np.all(off <= TOL):
+        worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
+        raise ValueError(
+            f"with theta given, w must be a unit axis: ‖w‖ = {float(norm[worst]):.6g} "
+            f"(|‖w‖ − 1| = {float(off[worst]):.1e} > TOL = {TOL:.0e})"
+            + (f" at batch index {tuple(int(i) for i in worst)}" if worst else "")
+            + "; normalise the axis, w / ‖w‖, or pass the rotation vector w·theta alone"
+        )
+    return _exp_rotvec(w * theta[..., None])
+
+
+def _residual_rows(X):
+    """Squared ‖RᵀR − I‖_F and det R for the 9 contiguous entry rows of a chunk."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
+    g00 = r00 * r00 + r10 * r10 + r20 * r20 - 1.0
+    g11 = r01 * r01 + r11 * r11 + r21 * r21 - 1.0
+    g22 = r02 * r02 + r12 * r12 + r22 * r22 - 1.0
+    g01 = r00 * r01 + r10 * r11 + r20 * r21
+    g02 = r00 * r02 + r10 * r12 + r20 * r22
+    g12 = r01 * r02 + r11 * r12 + r21 * r22
+    orth2 = g00 * g00 + g11 * g11 + g22 * g22 + 2.0 * (g01 * g01 + g02 * g02 + g12 * g12)
+    det = r00 * (r11 * r22 - r21 * r12) - r10 * (r01 * r22 - r21 * r02) + r20 * (
+        r01 * r12 - r11 * r02
+    )
+    return orth2, det
+
+
+def _rotation_error(R, index, tol, name):
+    """The ValueError for the first failing matrix: what failed, by how much, what to do."""
+    M = R[index]
+    where = f" (at batch index {index})" if len(index) else ""
+    if not np.all(np.isfinite(M)):
+        return ValueError(f"{name} contains NaN or infinity{where}; expected a finite 3x3 matrix")
+    orth = float(np.linalg.norm(M.T @ M - np.eye(3)))
+    det = float(np.linalg.det(M))
+    if det < 0 and abs(det + 1.0) <= tol and orth <= tol:
+        return ValueError(
+            f"{name} is a reflection, not a rotation: det({name}) = {det:.6g}{where}; a rotation "
+            f"has det = +1 (flip the sign of one column to make a right-handed frame)"
+        )
+    if orth > tol:
+        return ValueError(
+            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {orth:.1e} > tol = {tol:.0e}"
+            f"{where} (det = {det:.6g}); its columns are not orthonormal. If it is a rotation "
+            f"with rounded entries, re-orthonormalise it (e.g. U Vᵀ from its SVD) or pass a "
+            f"larger tol"
+        )
+    return ValueError(
+        f"{name} is not a rotation: det({name}) = {det:.6g}, |det − 1| = {abs(det - 1):.1e} > "
+        f"tol = {tol:.0e}{where}; a rotation has det = +1"
+    )
+
+
+def _validate_chunked(R, flat, tol, name):
+    """Raise the ValueError of the first matrix that is not in SO(3) within ``tol``."""
+    n = flat.shape[0]
+    for start in range(0, n, _CHUNK):
+        X = np.ascontiguousarray(flat[start : start + _CHUNK].T)
+        orth2, det = _residual_rows(X)
+        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
+        if not ok.all():
+            bad = start + int(np.argmin(ok))
+            index = np.unravel_index(bad, R.shape[:-2]) if R.ndim > 2 else ()
+            raise _rotation_error(R, tuple(int(i) for i in index), tol, name)
+
+
+def _log_rows(X, out, want_axis):
+    """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 rows of out; angles back.
+
+    Both branches are computed for every element with plain arithmetic (no masks, no
+    temporaries of the batch size) and blended: masked gathers cost more than the math.
+    """
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
+    c = r00 + r11
+    c += r22
+    c -= 1.0
+    c *= 0.5
+    v = out  # v = sin θ ω, the skew part; the result overwrites it at the end
+    np.subtract(r21, r12, out=v[0])
+    np.subtract(r02, r20, out=v[1])
+    np.subtract(r10, r01, out=v[2])
+    v *= 0.5
+    s = np.sqrt(np.einsum("im,im->m", v, v))
+    theta = np.arctan2(s, c)
+    # Up to 90°: r = θ v / sin θ (θ / sin θ -> 1 as θ -> 0).
+    near = (1.0 if want_axis else theta) / np.maximum(s, _TINY)
+    tiny = s < _TINY
+    if tiny.any():
+        near[tiny] = 0.0 if want_axis else 1.0
+    # Beyond 90°: the dominant column of N = R + Rᵀ − 2cI = 2(1 − cos θ) ω ωᵀ, signed by v.
+    d0, d1, d2 = r00 - c, r11 - c, r22 - c
+    n01, n02, n12 = r01 + r10, r02 + r20, r12 + r21
+    w0 = (d0 >= d1) & (d0 >= d2)
+    w1 = (d1 >= d2) & ~w0
+    w2 = ~(w0 | w1)
+    d0 += d0
+    d1 += d1
+    d2 += d2
+    ux = d0 * w0
+    ux += n01 * w1
+    ux += n02 * w2
+    uy = n01 * w0
+    uy += d1 * w1
+    uy += n12 * w2
+    uz = n02 * w0
+    uz += n12 * w1
+    uz += d2 * w2
+    norm2 = ux * ux
+    norm2 += uy * uy
+    norm2 += uz * uz
+    dot = ux * v[0]
+    dot += uy * v[1]
+    dot += uz * v[2]
+    far_scale = (1.0 if want_axis else theta) / np.sqrt(np.maximum(norm2, _TINY))
+    np.copysign(far_scale, dot, out=far_scale)  # dot = +0 at exactly π keeps u's own sign
+    far = c < 0.0
+    far_scale *= far
+    near *= ~far
+    v *= near
+    ux *= far_scale
+    uy *= far_scale
+    uz *= far_scale
+    v[0] += ux
+    v[1] += uy
+    v[2] += uz
+    if want_axis and tiny.any():
+        v[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
+    return theta
+
+
+def _log_impl(R, tol, name, want_axis):
+    R = as_matrices(R, name, finite=False)  # NaN and infinity fail the residual check below
+    batch = R.shape[:-2]
+    flat = R.reshape(-1, 9)
+    n = flat.shape[0]
+    vec = np.empty((n, 3))
+    angle = np.empty(n)
+    buf = np.empty((3, min(n, _CHUNK)))
+    for start in range(0, n, _CHUNK):
+        stop = min(start + _CHUNK, n)
+        X = np.ascontiguousarray(flat[start:stop].T)
+        orth2, det = _residual_rows(X)
+        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
+        if not ok.all():
+            bad = start + int(np.argmin(ok))
+            index = np.unravel_index(bad, batch) if batch else ()
+            raise _rotation_error(R, tuple(int(i) for i in index), tol, name)
+        b = buf[:, : stop - start]
+        angle[start:stop] = _log_rows(X, b, want_axis)
+        vec[start:stop] = b.T
+    return vec.reshape(batch + (3,)), angle.reshape(batch)
+
+
+def log(R, tol=TOL):
+    r"""The rotation vector :math:`r = \omega\theta` of a rotation, :math:`e^{\hat r} = R`.
+
+    The angle :math:`\theta \in [0, \pi]` is
+    :math:`\operatorname{atan2}(\|v\|, \tfrac12(\operatorname{tr}R - 1))` with
+    :math:`\hat v = \tfrac12 (R - R^T) = \sin\theta\,\hat\omega`. Up to 90° the axis is
+    :math:`v / \sin\theta`; beyond, it is the dominant column of
+    :math:`\tfrac12 (R + R^T) - \cos\theta\, I = (1 - \cos\theta)\,\omega\omega^T`, with the
+    sign that makes :math:`\omega \cdot v \ge 0`. At :math:`\pi` both signs are correct;
+    when the skew part vanishes exactly, the one returned has a positive dominant component.
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+        Rotation matrices.
+    tol : float
+        The input must satisfy :math:`\|R^TR - I\|_F \le` tol and :math:`|\det R - 1| \le` tol.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        Rotation vectors with norm (the angle) in :math:`[0, \pi]`.
+
+    Raises
+    ------
+    ValueError
+        If a matrix is not a rotation (not orthogonal, or a reflection with det = −1): the
+        message names what failed and by how much. Also for NaN, infinity and wrong shapes.
+
+    Examples
+    --------
+    >>> r = log(exp([0.1, -0.2, 0.3]))
+    >>> np.round(r, 12)
+    array([ 0.1, -0.2,  0.3])
+    >>> np.round(log(np.diag([-1.0, 1.0, -1.0])), 12)   # 180° about y (the notes' R_ab)
+    array([0.        , 3.14159265, 0.        ])
+    """
+    return _log_impl(R, tol, "R", want_axis=False)[0]
+
+
+def axis_angle(R, tol=TOL):
+    r"""The unit axis :math:`\omega` and angle :math:`\theta \in [0, \pi]` of a rotation.
+
+    :math:`R = e^{\hat\omega\theta}`, computed as in :func:`log`. For the identity
+    (:math:`\theta = 0`) every axis is correct; :math:`e_3 = (0, 0, 1)` is returned.
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+    tol : float
+        Membership tolerance, as in :func:`log`.
+
+    Returns
+    -------
+    axis : ndarray, shape (..., 3)
+        Unit vectors.
+    angle : ndarray, shape (...)
+        Angles in radians, in :math:`[0, \pi]`.
+
+    Raises
+    ------
+    ValueError
+        If a matrix is not a rotation, as in :func:`log`.
+
+    Examples
+    --------
+    >>> axis, angle = axis_angle(rot_x(0.5))
+    >>> axis, round(float(angle), 12)
+    (array([1., 0., 0.]), 0.5)
+    """
+    return _log_impl(R, tol, "R", want_axis=True)
+
+
+def exp_series(A, terms):
+    r"""The truncated Taylor series of the matrix exponential (Definition 6).
+
+    .. math:: e^{A} \approx \sum_{n=0}^{N-1} \frac{A^n}{n!}, \qquad A^0 = I,
+
+    with :math:`N` = ``terms``. Works for any square matrices; meant for teaching how the
+    series converges, not for speed (use :func:`exp` for rotations).
+
+    Parameters
+    ----------
+    A : array_like, shape (..., n, n)
+    terms : int
+        Number of terms kept, at least 1 (``terms=1`` gives :math:`I`).
+
+    Returns
+    -------
+    ndarray, shape (..., n, n)
+
+    Raises
+    ------
+    ValueError
+        If ``terms`` < 1 or ``A`` is not square.
+
+    Examples
+    --------
+    >>> W = hat([0, 0, np.pi / 2])
+    >>> bool(np.abs(exp_series(W, 25) - exp([0, 0, np.pi / 2])).max() < 1e-15)
+    True
+    >>> exp_series([[0.0, 1.0], [0.0, 0.0]], 2)      # I + A: nilpotent, exact
+    array([[1., 1.],
+           [0., 1.]])
+    """
+    A = as_square_matrices(A, "A")
+    terms = as_count(terms, "terms", minimum=1)
+    n = A.shape[-1]
+    term = np.broadcast_to(np.eye(n), A.shape).copy()
+    total = term.copy()
+    for k in range(1, terms):
+        term = term @ A / k
+        total += term
+    return total
+
+
+def _rot(theta, i, j):
+    theta = as_angles(theta, "theta")
+    R = np.zeros(theta.shape + (3, 3))
+    c, s = np.cos(theta), np.sin(theta)
+    k = 3 - i - j
+    R[..., k, k] = 1.0
+    R[..., i, i] = c
+    R[..., j, j] = c
+    R[..., i, j] = -s
+    R[..., j, i] = s
+    return R
+
+
+def rot_x(theta):
+    r"""Rotation by ``theta`` about the x axis, :math:`e^{\hat e_1 \theta}`.
+
+    .. math::
+        R_x(\theta) = \begin{bmatrix} 1 & 0 & 0 \\ 0 & \cos\theta & -\sin\theta \\
+        0 & \sin\theta & \cos\theta \end{bmatrix}
+
+    Parameters
+    ----------
+    theta : array_like
+        Angles in radians; the result has shape ``theta.shape + (3, 3)``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Examples
+    --------
+    >>> np.round(rot_x(np.pi / 2) @ [0, 1, 0], 12)
+    array([0., 0., 1.])
+    """
+    return _rot(theta, 1, 2)
+
+
+def rot_y(theta):
+    r"""Rotation by ``theta`` about the y axis, :math:`e^{\hat e_2 \theta}`.
+
+    .. math::
+        R_y(\theta) = \begin{bmatrix} \cos\theta & 0 & \sin\theta \\ 0 & 1 & 0 \\
+        -\sin\theta & 0 & \cos\theta \end{bmatrix}
+
+    Parameters
+    ----------
+    theta : array_like
+        Angles in radians.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Examples
+    --------
+    The notes' :math:`R_{ab}` (eq. 27) is 180° about y:
+
+    >>> np.round(rot_y(np.pi), 12) + 0.0
+    array([[-1.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0., -1.]])
+    """
+    return _rot(theta, 2, 0)
+
+
+def rot_z(theta):
+    r"""Rotation by ``theta`` about the z axis, :math:`e^{\hat e_3 \theta}`.
+
+    .. math::
+        R_z(\theta) = \begin{bmatrix} \cos\theta & -\sin\theta & 0 \\
+        \sin\theta & \cos\theta & 0 \\ 0 & 0 & 1 \end{bmatrix}
+
+    Parameters
+    ----------
+    theta : array_like
+        Angles in radians.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Examples
+    --------
+    The notes' :math:`R_{ac}` (eq. 28) is 45° about z:
+
+    >>> np.allclose(rot_z(np.pi / 4)[:, 0], [1 / np.sqrt(2), 1 / np.sqrt(2), 0])
+    True
+    """
+    return _rot(theta, 0, 1)
+
+
+def is_rotation(R, tol=TOL):
+    r"""Is R in SO(3): :math:`\|R^TR - I\|_F \le` tol and :math:`|\det R - 1| \le` tol?
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+    tol : float
+
+    Returns
+    -------
+    bool or ndarray of bool
+        A bool for one matrix, an array of the batch shape for a batch. Matrices holding NaN
+        or infinity are not rotations.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If the input is not numeric or not of shape (..., 3, 3): that is a usage error, not a
+        "no".
+
+    Examples
+    --------
+    >>> is_rotation(rot_z(0.3)), is_rotation(np.diag([1, 1, -1])), is_rotation(2 * np.eye(3))
+    (True, False, False)
+    """
+    R = as_float_array(R, "R")
+    if R.ndim < 2 or R.shape[-2:] != (3, 3):
+        raise ValueError(f"R must have shape (..., 3, 3), got shape {R.shape}")
+    flat = R.reshape(-1, 9)
+    X = np.ascontiguousarray(flat.T)
+    with np.errstate(invalid="ignore", over="ignore"):
+        orth2, det = _residual_rows(X)
+        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
+    if R.ndim == 2:
+        return bool(ok[0])
+    return ok.reshape(R.shape[:-2])
+
+
+def check_rotation(R, tol=TOL, name="R"):
+    r"""Return R as a float array if it is in SO(3), else raise a ValueError that explains.
+
+    Checks :math:`\|R^TR - I\|_F \le` tol (orthonormal columns, Proposition 3) and
+    :math:`|\det R - 1| \le` tol (right-handed, Proposition 4).
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+    tol : float
+    name : str
+        How to call the matrix in the message.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+
+    Raises
+    ------
+    ValueError
+        Naming what failed and by how much, e.g. ``‖RᵀR − I‖ = 3.2e-02 > tol = 1e-09`` or
+        ``det(R) = -1: a reflection, not a rotation``, with the batch index of the first
+        failure and a suggestion.
+
+    Examples
+    --------
+    >>> check_rotation(np.diag([1.0, 1.0, -1.0]))
+    Traceback (most recent call last):
+    ...
+    ValueError: R is a reflection, not a rotation: det(R) = -1; a rotation has det = +1 (flip the sign of one column to make a right-handed frame)
+    """
+    R = as_matrices(R, name)
+    _validate_chunked(R, R.reshape(-1, 9), tol, name)
+    return R
+
+
+def random_rotations(n, seed=None):
+    r"""``n`` rotations drawn uniformly from SO(3) (the Haar measure).
+
+    A unit quaternion :math:`q = g / \|g\|` with :math:`g \sim N(0, I_4)` is uniform on the
+    3-sphere, and :math:`q \mapsto R(q)` maps that to the uniform distribution on SO(3):
+
+    .. math::
+        R = I + 2 q_0 \hat u + 2 \hat u^2, \qquad q = (q_0, u).
+
+    Parameters
+    ----------
+    n : int
+        How many.
+    seed : int, numpy.random.Generator or None
+        Seed for reproducible draws (notebooks always pass one).
+
+    Returns
+    -------
+    ndarray, shape (n, 3, 3)
+
+    Examples
+    --------
+    >>> Rs = random_rotations(1000, seed=0)
+    >>> Rs.shape, bool(is_rotation(Rs).all())
+    ((1000, 3, 3), True)
+    """
+    n = as_count(n, "n")
+    rng = np.random.default_rng(seed)
+    q = rng.standard_normal((n, 4))
+    q /= np.linalg.norm(q, axis=1, keepdims=True)
+    q0, u = q[:, 0], q[:, 1:]
+    U = hat(u)
+    return np.eye(3) + 2.0 * q0[:, None, None] * U + 2.0 * U @ U
+
+
+def angle_between(R1, R2, tol=TOL):
+    r"""The geodesic angle between two rotations: the angle of :math:`R_1^T R_2`, in [0, π].
+
+    For small angles it uses :math:`\|R_1 - R_2\|_F = 2\sqrt2 \sin(\theta/2)`, which keeps full
+    relative accuracy down to the tiniest angles (no :math:`\arccos` near 1); above 90° it uses
+    the angle of :math:`R_1^TR_2` as :func:`log` does.
+
+    Parameters
+    ----------
+    R1, R2 : array_like, shape (..., 3, 3)
+        Rotations (validated), broadcast against each other.
+    tol : float
+
+    Returns
+    -------
+    ndarray or float
+        Angles in radians, of the broadcast batch shape (a float for two single matrices).
+
+    Examples
+    --------
+    >>> float(angle_between(np.eye(3), rot_z(1e-12)))
+    1e-12
+    >>> round(float(angle_between(np.eye(3), rot_x(np.pi))), 12)
+    3.14159265359
+    """
+    R1 = check_rotation(R1, tol, "R1")
+    R2 = check_rotation(R2, tol, "R2")
+    d = np.linalg.norm(R1 - R2, axis=(-2, -1)) / (2.0 * np.sqrt(2.0))
+    small = 2.0 * np.arcsin(np.minimum(d, 1.0))
+    M = np.swapaxes(R1, -1, -2) @ R2
+    c = 0.5 * (np.trace(M, axis1=-2, axis2=-1) - 1.0)
+    v = 0.5 * np.stack(
+        [M[..., 2, 1] - M[..., 1, 2], M[..., 0, 2] - M[..., 2, 0], M[..., 1, 0] - M[..., 0, 1]],
+        axis=-1,
+    )
+    large = np.arctan2(np.linalg.norm(v, axis=-1), c)
+    angle = np.where(small < 0.5 * np.pi, small, large)
+    return float(angle) if angle.ndim == 0 else angle

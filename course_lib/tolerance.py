@@ -1,0 +1,20 @@
+"""The one tolerance policy of course_lib.
+
+Every numerical check in the package (is this a rotation? is this matrix skew? is this axis a
+unit vector? does a student's numeric answer match?) compares a *residual* against the same
+absolute tolerance::
+
+    TOL = 1e-9
+
+Residuals are measured in the Frobenius norm for matrices and the Euclidean norm for vectors,
+for example ``‖RᵀR − I‖_F ≤ TOL`` and ``|det R − 1| ≤ TOL``.
+
+Why 1e-9: rotations built in double precision from a few products carry errors of order
+1e-16 to 1e-15, and entries typed in by hand to 10 significant digits (``0.7071067812``)
+carry errors of order 1e-10. Both pass; a matrix that is wrong in the third digit, or a
+reflection, fails by many orders of magnitude. Functions that accept a ``tol`` argument use
+``TOL`` as its default, so a lab that needs a looser check passes ``tol=`` explicitly rather
+than changing the policy.
+"""
+
+TOL = 1e-9

@@ -1,0 +1,463 @@
+r"""Reference frames and rotation matrices (notes §0.1.1 "Reference Frames", §0.1.2 "Rotation Matrices").
+
+A frame is stored as a 3x3 matrix whose COLUMNS are its basis vectors,
+
+.. math:: F = \begin{bmatrix} e_1 & e_2 & e_3 \end{bmatrix},
+
+batched over leading axes as ``(..., 3, 3)``. The course always works with orthonormal
+(eqs. 1-2), right-handed (:math:`e_1 \times e_2 = e_3`) frames. In such a frame a point has
+coordinates obtained by projection (eqs. 3-5), the body axes seen in the world frame stack into
+the rotation matrix :math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26), and the same matrix
+changes coordinates, :math:`v_a = R_{ab} v_b` (eq. 64).
+
+Every check compares a residual norm with the one tolerance of the package,
+:data:`course_lib.tolerance.TOL`.
+"""
+
+import numbers
+
+import numpy as np
+
+from . import so3
+from ._arrays import as_matrices, as_vectors
+from .tolerance import TOL
+
+__all__ = [
+    "is_orthonormal",
+    "is_right_handed",
+    "check_frame",
+    "frame_from_vectors",
+    "coordinates",
+    "rotation_from_axes",
+    "change_frame",
+]
+
+_BASIS_NAMES = ("e1", "e2", "e3")
+
+
+# --------------------------------------------------------------------------------------------
+# private helpers (also used by course_lib.rigid and course_lib.groups)
+# --------------------------------------------------------------------------------------------
+
+
+def _check_tol(tol):
+    """Return ``tol`` as a float after checking it is a finite real number >= 0."""
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
+        raise TypeError(f"tol must be a real number (default TOL = {TOL:g}), got {type(tol).__name__} {tol!r}")
+    tol = float(tol)
+    if not np.isfinite(tol) or tol < 0:
+        raise ValueError(f"tol must be a finite number >= 0 (default TOL = {TOL:g}), got {tol!r}")
+    return tol
+
+
+def _tol_label(tol):
+    """``'TOL = 1e-09'`` for the package tolerance, ``'tol = ...'`` for an explicit one."""
+    return f"TOL = {tol:g}" if tol == TOL else f"tol = {tol:g}"
+
+
+def _fmt_vec(v, digits=4):
+    """A short, platform-stable text form of a vector or scalar (rounded, no negative zeros)."""
+    arr = np.round(np.asarray(v, dtype=np.float64), digits) + 0.0
+    if arr.ndim == 0:
+        return f"{float(arr):.{digits}g}"
+    return np.array2string(arr, separator=", ", precision=digits, suppress_small=True)
+
+
+def _as_bool(result):
+    """A Python bool for a single item, a bool array for a batch."""
+    return bool(result) if np.ndim(result) == 0 else np.asarray(result, dtype=bool)
+
+
+def _orthonormality_residual(frame):
+    """‖FᵀF − I‖_F for each frame of a (..., 3, 3) stack."""
+    gram = np.swapaxes(frame, -1, -2) @ frame
+    return np.linalg.norm(gram - np.eye(3), axis=(-2, -1))
+
+
+def _handedness_residual(frame):
+    """‖e1 × e2 − e3‖ for each frame of a (..., 3, 3) stack."""
+    return np.linalg.norm(np.cross(frame[..., :, 0], frame[..., :, 1]) - frame[..., :, 2], axis=-1)
+
+
+def _diagnose(frame, tol, names=_BASIS_NAMES):
+    """Explain why one (3, 3) frame is not orthonormal and right-handed, or return None."""
+    label = _tol_label(tol)
+    e = [frame[:, i] for i in range(3)]
+    residual = float(_orthonormality_residual(frame))
+    if residual > tol:
+        # The decision uses the Frobenius residual (as is_orthonormal does); the details name the
+        # individual properties of eqs. (1)-(2) that contribute to it, largest first.
+        problems = []
+        for i in range(3):
+            length = float(np.linalg.norm(e[i]))
+            problems.append(
+                (
+                    abs(length**2 - 1.0),
+                    f"{names[i]} is not a unit vector: ‖{names[i]}‖ = {length:.6g} "
+                    f"(|‖{names[i]}‖ − 1| = {abs(length - 1.0):.1e}); divide it by its length",
+                )
+            )
+        for i, j in ((0, 1), (0, 2), (1, 2)):
+            dot = float(e[i] @ e[j])
+            problems.append(
+                (
+                    abs(dot) * np.sqrt(2.0),
+                    f"{names[i]} and {names[j]} are not orthogonal: {names[i]} · {names[j]} = {dot:.1e}; "
+                    f"make them perpendicular (e.g. Gram-Schmidt)",
+                )
+            )
+        problems.sort(key=lambda item: -item[0])
+        shown = [text for size, text in problems if size > tol] or [problems[0][1]]
+        return (
+            f"the frame is not orthonormal: ‖FᵀF − I‖ = {residual:.1e} > {label} "
+            f"(F = [{' '.join(names)}] as columns). " + "; ".join(shown) + "."
+        )
+    handed = float(_handedness_residual(frame))
+    if handed > tol:
+        flipped = float(np.linalg.norm(np.cross(e[0], e[1]) + e[2]))
+        if flipped <= handed:
+            return (
+                f"the frame is left-handed: {names[0]} × {names[1]} = −{names[2]} "
+                f"(‖{names[0]} × {names[1]} − {names[2]}‖ = {handed:.1e} > {label}); "
+                f"negate one basis vector (e.g. use −{names[2]}) or swap two of them to make it right-handed."
+            )
+        return (
+            f"the frame is not right-handed: ‖{names[0]} × {names[1]} − {names[2]}‖ = {handed:.1e} > {label}; "
+            f"the third basis vector must be the cross product of the first two."
+        )
+    return None
+
+
+# --------------------------------------------------------------------------------------------
+# public API
+# --------------------------------------------------------------------------------------------
+
+
+def is_orthonormal(frame, tol=TOL):
+    r"""Is the frame (basis vectors as columns) orthonormal?
+
+    The columns :math:`e_1, e_2, e_3` are orthonormal when :math:`\|e_i\| = 1` (eq. 1) and
+    :math:`e_i \cdot e_j = 0` for :math:`i \ne j` (eq. 2), i.e. when
+
+    .. math:: \| F^\mathsf{T} F - I \|_F \le \mathrm{tol}, \qquad F = [e_1\; e_2\; e_3].
+
+    Parameters
+    ----------
+    frame : array_like, shape (..., 3, 3)
+        Basis vectors stored as the columns of each 3x3 matrix.
+    tol : float, optional
+        Absolute tolerance on the Frobenius residual, default :data:`~course_lib.tolerance.TOL`.
+
+    Returns
+    -------
+    bool or ndarray of bool, shape (...)
+        A Python bool for a single frame, a boolean array for a batch.
+
+    Raises
+    ------
+    TypeError
+        If ``frame`` is not numeric or ``tol`` is not a real number.
+    ValueError
+        If ``frame`` does not have shape (..., 3, 3), contains NaN/inf, or ``tol`` < 0.
+
+    Examples
+    --------
+    >>> is_orthonormal(np.eye(3))
+    True
+    >>> is_orthonormal([[1, 1, 0], [0, 1, 0], [0, 0, 1]])   # e2 = (1, 1, 0) is not a unit vector
+    False
+    """
+    tol = _check_tol(tol)
+    frame = as_matrices(frame, "frame")
+    return _as_bool(_orthonormality_residual(frame) <= tol)
+
+
+def is_right_handed(frame, tol=TOL):
+    r"""Is the frame (basis vectors as columns) right-handed, :math:`e_1 \times e_2 = e_3`?
+
+    This is the notes' definition taken literally,
+
+    .. math:: \| e_1 \times e_2 - e_3 \| \le \mathrm{tol},
+
+    so it also asks the lengths to match; for an orthonormal frame it is the same as
+    :math:`\det F = +1`.
+
+    Parameters
+    ----------
+    frame : array_like, shape (..., 3, 3)
+        Basis vectors stored as the columns of each 3x3 matrix.
+    tol : float, optional
+        Absolute tolerance on the Euclidean residual, default :data:`~course_lib.tolerance.TOL`.
+
+    Returns
+    -------
+    bool or ndarray of bool, shape (...)
+        A Python bool for a single frame, a boolean array for a batch.
+
+    Raises
+    ------
+    TypeError
+        If ``frame`` is not numeric or ``tol`` is not a real number.
+    ValueError
+        If ``frame`` does not have shape (..., 3, 3), contains NaN/inf, or ``tol`` < 0.
+
+    Examples
+    --------
+    >>> is_right_handed(np.eye(3))
+    True
+    >>> is_right_handed(np.diag([1.0, 1.0, -1.0]))   # e1 × e2 = −e3
+    False
+    """
+    tol = _check_tol(tol)
+    frame = as_matrices(frame, "frame")
+    return _as_bool(_handedness_residual(frame) <= tol)
+
+
+def check_frame(frame, tol=TOL):
+    r"""Return the frame if it is orthonormal and right-handed, otherwise raise a ValueError.
+
+    The frame :math:`F = [e_1\; e_2\; e_3]` passes when
+
+    .. math:: \| F^\mathsf{T} F - I \|_F \le \mathrm{tol}
+              \quad\text{and}\quad \| e_1 \times e_2 - e_3 \| \le \mathrm{tol}.
+
+    Parameters
+    ----------
+    frame : array_like, shape (..., 3, 3)
+        Basis vectors stored as the columns of each 3x3 matrix.
+    tol : float, optional
+        Absolute tolerance, default :data:`~course_lib.tolerance.TOL`.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        The frame as a float64 array.
+
+    Raises
+    ------
+    ValueError
+        If a frame fails: the message names which vectors are not unit and by how much, which
+        pair is not orthogonal and its dot product, or that :math:`e_1 \times e_2 = -e_3`
+        (left-handed), and says how to fix it. For a batch, the first failing frame is named.
+        Also for a wrong shape, NaN/inf or a negative ``tol``.
+    TypeError
+        If ``frame`` is not numeric.
+
+    Examples
+    --------
+    >>> check_frame(np.eye(3)).shape
+    (3, 3)
+    >>> check_frame(np.diag([1.0, 1.0, -1.0]))
+    Traceback (most recent call last):
+        ...
+    ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09); negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
+    """
+    tol = _check_tol(tol)
+    frame = as_matrices(frame, "frame")
+    bad = (_orthonormality_residual(frame) > tol) | (_handedness_residual(frame) > tol)
+    if np.any(bad):
+        index = tuple(int(i) for i in np.argwhere(bad)[0]) if frame.ndim > 2 else ()
+        reason = _diagnose(frame[index], tol)
+        if frame.ndim > 2:
+            count = int(np.count_nonzero(bad))
+            reason = f"frame{list(index)} ({count} of {bad.size} frames fail): {reason}"
+        raise ValueError(reason)
+    return frame
+
+
+def frame_from_vectors(e1, e2, e3):
+    r"""Stack three basis vectors as the columns of a frame matrix.
+
+    .. math:: F = \begin{bmatrix} e_1 & e_2 & e_3 \end{bmatrix}
+
+    The vectors are broadcast against each other, so a batch of frames can be built from
+    batches of vectors. No orthonormality is assumed: use :func:`check_frame` for that.
+
+    Parameters
+    ----------
+    e1, e2, e3 : array_like, shape (..., 3)
+        The basis vectors (batches broadcast together).
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        The frame, with ``F[..., :, i]`` equal to the i-th vector.
+
+    Raises
+    ------
+    TypeError
+        If a vector is not numeric.
+    ValueError
+        If a vector does not have shape (..., 3), contains NaN/inf, or the batches do not
+        broadcast.
+
+    Examples
+    --------
+    >>> frame_from_vectors([1, 0, 0], [0, 0, 1], [0, -1, 0])
+    array([[ 1.,  0.,  0.],
+           [ 0.,  0., -1.],
+           [ 0.,  1.,  0.]])
+    """
+    vectors = [as_vectors(v, name) for v, name in zip((e1, e2, e3), _BASIS_NAMES)]
+    try:
+        vectors = np.broadcast_arrays(*vectors)
+    except ValueError:
+        shapes = ", ".join(f"{n}: {v.shape}" for n, v in zip(_BASIS_NAMES, vectors))
+        raise ValueError(f"the basis vectors must have broadcastable shapes (..., 3), got {shapes}") from None
+    return np.stack(vectors, axis=-1)
+
+
+def coordinates(p, frame):
+    r"""Coordinates of the point ``p`` in an orthonormal right-handed frame, by projection.
+
+    Each coordinate is the projection of :math:`p` onto one basis vector (eqs. 3-5):
+
+    .. math:: p_x = p \cdot e_1, \quad p_y = p \cdot e_2, \quad p_z = p \cdot e_3,
+              \qquad\text{i.e.}\quad \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} p.
+
+    Parameters
+    ----------
+    p : array_like, shape (..., 3)
+        The point, written in the coordinates in which the basis vectors are given.
+    frame : array_like, shape (..., 3, 3)
+        Basis vectors as columns; checked with :func:`check_frame`. Batches broadcast with ``p``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        ``(p · e1, p · e2, p · e3)``.
+
+    Raises
+    ------
+    ValueError
+        If the frame is not orthonormal and right-handed (see :func:`check_frame`), shapes are
+        wrong or do not broadcast, or inputs hold NaN/inf.
+    TypeError
+        If an input is not numeric.
+
+    Examples
+    --------
+    >>> s = 1 / np.sqrt(2)
+    >>> frame = frame_from_vectors([s, s, 0], [-s, s, 0], [0, 0, 1])   # 45° about z
+    >>> np.round(coordinates([1, 1, 3], frame), 6) + 0.0
+    array([1.414214, 0.      , 3.      ])
+    """
+    p = as_vectors(p, "p")
+    frame = check_frame(frame)
+    try:
+        return (np.swapaxes(frame, -1, -2) @ p[..., None])[..., 0]
+    except ValueError:
+        raise ValueError(
+            f"p and frame batches do not broadcast: p has shape {p.shape}, frame has shape {frame.shape}"
+        ) from None
+
+
+def rotation_from_axes(x_ab, y_ab, z_ab):
+    r"""The rotation matrix of frame B relative to frame A from B's axes seen in A (eq. 26).
+
+    .. math:: R_{ab} = \begin{bmatrix} x_{ab} & y_{ab} & z_{ab} \end{bmatrix}
+
+    where :math:`x_{ab}, y_{ab}, z_{ab}` are the body axes written in world (A) coordinates.
+    The result is checked with :func:`course_lib.so3.check_rotation`, so axes that are not an
+    orthonormal right-handed frame raise a clear error.
+
+    Parameters
+    ----------
+    x_ab, y_ab, z_ab : array_like, shape (..., 3)
+        The body frame's axes in world coordinates (batches broadcast together).
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        :math:`R_{ab} \in SO(3)`.
+
+    Raises
+    ------
+    ValueError
+        If the axes do not form a rotation matrix; the message says which axis or pair fails
+        (not unit, not orthogonal, left-handed) and by how much. Also for wrong shapes or NaN.
+    TypeError
+        If an axis is not numeric.
+
+    Examples
+    --------
+    Eq. (27): B is A turned 180° about y.
+
+    >>> rotation_from_axes([-1, 0, 0], [0, 1, 0], [0, 0, -1])
+    array([[-1.,  0.,  0.],
+           [ 0.,  1.,  0.],
+           [ 0.,  0., -1.]])
+
+    Eq. (28): C is A turned 45° about z.
+
+    >>> s = 1 / np.sqrt(2)
+    >>> R_ac = rotation_from_axes([s, s, 0], [-s, s, 0], [0, 0, 1])
+    >>> np.round(R_ac, 4) + 0.0
+    array([[ 0.7071, -0.7071,  0.    ],
+           [ 0.7071,  0.7071,  0.    ],
+           [ 0.    ,  0.    ,  1.    ]])
+    """
+    names = ("x_ab", "y_ab", "z_ab")
+    vectors = [as_vectors(v, name) for v, name in zip((x_ab, y_ab, z_ab), names)]
+    try:
+        R = frame_from_vectors(*vectors)
+    except ValueError:
+        shapes = ", ".join(f"{n}: {v.shape}" for n, v in zip(names, vectors))
+        raise ValueError(f"x_ab, y_ab, z_ab must have broadcastable shapes (..., 3), got {shapes}") from None
+    try:
+        return so3.check_rotation(R, name="R_ab")
+    except ValueError as err:
+        bad = (_orthonormality_residual(R) > TOL) | (_handedness_residual(R) > TOL)
+        detail = ""
+        if np.any(bad):
+            index = tuple(int(i) for i in np.argwhere(bad)[0]) if R.ndim > 2 else ()
+            where = f" (R_ab{list(index)})" if R.ndim > 2 else ""
+            detail = f" Diagnosis{where}: {_diagnose(R[index], TOL, names)}"
+        raise ValueError(
+            f"the axes x_ab, y_ab, z_ab do not form a rotation matrix R_ab = [x_ab y_ab z_ab]: "
+            f"{str(err).rstrip('.')}.{detail}"
+        ) from err
+
+
+def change_frame(R_ab, v_b):
+    r"""Rewrite a vector given in frame B in frame A coordinates (eq. 64).
+
+    .. math:: v_a = R_{ab}\, v_b = v_{bx} x_{ab} + v_{by} y_{ab} + v_{bz} z_{ab}
+
+    Parameters
+    ----------
+    R_ab : array_like, shape (..., 3, 3)
+        Rotation of B relative to A; checked with :func:`course_lib.so3.check_rotation`.
+    v_b : array_like, shape (..., 3)
+        The vector in B coordinates. Batches broadcast with ``R_ab``.
+
+    Returns
+    -------
+    ndarray, shape (..., 3)
+        :math:`v_a`.
+
+    Raises
+    ------
+    ValueError
+        If ``R_ab`` is not a rotation, shapes are wrong or do not broadcast, or inputs hold NaN.
+    TypeError
+        If an input is not numeric.
+
+    Examples
+    --------
+    The notes' example (eqs. 65-68): :math:`v_b = (1, 1, 3)` and B turned 45° about z.
+
+    >>> s = 1 / np.sqrt(2)
+    >>> R_ab = [[s, -s, 0], [s, s, 0], [0, 0, 1]]
+    >>> v_a = change_frame(R_ab, [1, 1, 3])
+    >>> np.allclose(v_a, [0, np.sqrt(2), 3])
+    True
+    """
+    R_ab = so3.check_rotation(R_ab, name="R_ab")
+    v_b = as_vectors(v_b, "v_b")
+    try:
+        return np.asarray((R_ab @ v_b[..., None])[..., 0], dtype=np.float64)
+    except ValueError:
+        raise ValueError(
+            f"R_ab and v_b batches do not broadcast: R_ab has shape {np.shape(R_ab)}, v_b has shape {v_b.shape}"
+        ) from None

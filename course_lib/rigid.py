@@ -1,0 +1,444 @@
+r"""Is a map :math:`g: \mathbb{R}^3 \to \mathbb{R}^3` a rigid body transformation? (Definition 1)
+
+Definition 1 of the notes asks two things of :math:`g`, for all :math:`p_1, p_2 \in \mathbb{R}^3`:
+
+1. it preserves length, :math:`\|g(p_1) - g(p_2)\| = \|p_1 - p_2\|`;
+2. it preserves orientation, :math:`g(p_1) \times g(p_2) = g(p_1 \times p_2)`.
+
+:func:`check_rigid` tests both on sample pairs and reports the worst counterexample.
+:func:`rotation_map`, :func:`reflection_map` and :func:`translation_map` build the maps the
+notebooks compare: the 90° turn about z (rigid), the mirror that flips z (fails condition 2)
+and a translation (see the note in :func:`check_rigid`).
+"""
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import so3
+from ._arrays import as_count, as_float_array, as_vectors, require_finite
+from .frames import _check_tol, _fmt_vec, _tol_label
+from .tolerance import TOL
+
+__all__ = [
+    "Counterexample",
+    "RigidCheck",
+    "check_rigid",
+    "rotation_map",
+    "reflection_map",
+    "translation_map",
+]
+
+_CONDITIONS = {
+    "length": "condition 1 (length)",
+    "cross product": "condition 2 (cross products)",
+}
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class Counterexample:
+    r"""A pair of points on which a condition of Definition 1 fails.
+
+    Attributes
+    ----------
+    p1, p2 : ndarray, shape (3,)
+        The two sample points.
+    lhs, rhs : float or ndarray
+        The two sides that should be equal: :math:`\|g(p_1) - g(p_2)\|` and
+        :math:`\|p_1 - p_2\|` (condition 1, floats), or :math:`g(p_1) \times g(p_2)` and
+        :math:`g(p_1 \times p_2)` (condition 2, 3-vectors).
+    mismatch : float
+        The size of the difference, :math:`|lhs - rhs|` or :math:`\|lhs - rhs\|`.
+    """
+
+    p1: np.ndarray
+    p2: np.ndarray
+    lhs: object
+    rhs: object
+    mismatch: float
+
+    def __repr__(self):
+        return (
+            f"Counterexample(p1={_fmt_vec(self.p1)}, p2={_fmt_vec(self.p2)}, "
+            f"lhs={_fmt_vec(self.lhs)}, rhs={_fmt_vec(self.rhs)}, mismatch={self.mismatch:.1e})"
+        )
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class RigidCheck:
+    r"""The result of :func:`check_rigid`.
+
+    Attributes
+    ----------
+    ok : bool
+        True when both conditions hold on every sample pair (within the tolerance).
+    condition : {"length", "cross product", None}
+        The first condition that fails, in the notes' order; None when ``ok``.
+    message : str
+        A sentence saying what was found, with the numbers.
+    counterexample : Counterexample or None
+        The sample pair with the largest mismatch for the failed condition.
+    n_pairs : int
+        How many (ordered) pairs of points were checked.
+    """
+
+    ok: bool
+    condition: object
+    message: str
+    counterexample: object
+    n_pairs: int
+
+    def __bool__(self):
+        return bool(self.ok)
+
+    def __str__(self):
+        return self.message
+
+    def __repr__(self):
+        mismatch = None if self.counterexample is None else f"{self.counterexample.mismatch:.1e}"
+        return (
+            f"RigidCheck(ok={self.ok}, condition={self.condition!r}, n_pairs={self.n_pairs}, "
+            f"mismatch={mismatch})"
+        )
+
+    def _repr_markdown_(self):
+        if self.ok:
+            return f"**✓ rigid.** {self.message[2:]}"
+        c = self.counterexample
+        return (
+            f"**✗ not rigid.** {self.message[2:]}\n\n"
+            f"| | |\n|---|---|\n"
+            f"| $p_1$ | `{_fmt_vec(c.p1)}` |\n| $p_2$ | `{_fmt_vec(c.p2)}` |\n"
+            f"| left side | `{_fmt_vec(c.lhs)}` |\n| right side | `{_fmt_vec(c.rhs)}` |\n"
+            f"| mismatch | {c.mismatch:.1e} |"
+        )
+
+
+def _call(g, x):
+    """(shape of g(x), g(x)) or (None, the exception g raised)."""
+    try:
+        out = g(x.copy())
+    except Exception as err:  # noqa: BLE001 - any failure only means "not this calling style"
+        return None, err
+    return np.shape(out), out
+
+
+def _evaluate(g, X, tol):
+    """g on the rows of X (M, 3), calling it on the whole batch or point by point.
+
+    ``g`` is probed on two rows (a shape that a per-point ``R @ p`` cannot silently mistake for
+    a 3x3 matrix) and on single points. It is used batched only if the batched probe gives back
+    two 3-vectors that agree with the single-point calls (or if single points are refused);
+    otherwise it is applied row by row, which is what g: R³ → R³ means.
+    """
+    M = X.shape[0]
+    batch_shape, batch_out = _call(g, X[:2])
+    single_shape, single_out = _call(g, X[0])
+    batched = batch_shape == (2, 3)
+    per_point = single_shape == (3,)
+    if batched and per_point:
+        rows = [single_out, _call(g, X[1])[1]]
+        try:
+            agree = np.allclose(
+                np.asarray(batch_out, dtype=np.float64), np.asarray(rows, dtype=np.float64), rtol=0, atol=tol
+            )
+        except (TypeError, ValueError):
+            agree = False
+        batched = bool(agree)
+    if not (batched or per_point):
+        def outcome(shape, out):
+            return f"raised {type(out).__name__}: {out}" if shape is None else f"returned shape {shape}"
+
+        got_batched, got_single = outcome(batch_shape, batch_out), outcome(single_shape, single_out)
+        cause = single_out if single_shape is None else (batch_out if batch_shape is None else None)
+        raise TypeError(
+            f"g must map an (N, 3) array of points to an (N, 3) array, or one point of shape (3,) "
+            f"to shape (3,); on points of shape (2, 3) g {got_batched}, and on one point of "
+            f"shape (3,) g {got_single}"
+        ) from cause
+    if batched:
+        out, how = g(X.copy()), "batched"
+    else:
+        out, how = [g(x.copy()) for x in X], "point by point"
+    try:
+        out = as_float_array(out, "g(p)")
+    except ValueError as err:  # ragged: some calls returned other shapes
+        raise ValueError(f"g must return one 3-vector per point (called {how}): {err}") from None
+    if out.shape != (M, 3):
+        raise ValueError(
+            f"g must return one 3-vector per point: called {how} on {M} points it returned shape "
+            f"{out.shape}, expected {(M, 3)}"
+        )
+    return require_finite(out, "g(p)")
+
+
+def _pairs(points, n, seed):
+    """(p1, p2) arrays of shape (K, 3) from the points argument of check_rigid."""
+    if points is None:
+        rng = np.random.default_rng(seed)
+        sample = rng.standard_normal((as_count(n, "n", minimum=1), 2, 3))
+        return sample[:, 0], sample[:, 1]
+    pts = as_vectors(points, "points")
+    if pts.ndim == 2:
+        if pts.shape[0] < 2:
+            raise ValueError(f"points must hold at least 2 points to form a pair, got shape {pts.shape}")
+        i, j = np.nonzero(~np.eye(pts.shape[0], dtype=bool))
+        return pts[i], pts[j]
+    if pts.ndim == 3 and pts.shape[1] == 2 and pts.shape[0] >= 1:
+        return pts[:, 0], pts[:, 1]
+    raise ValueError(
+        f"points must have shape (N, 3) (every ordered pair of distinct points is checked) or "
+        f"(K, 2, 3) (K explicit pairs), got shape {pts.shape}"
+    )
+
+
+def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
+    r"""Test the two conditions of Definition 1 on sample pairs of points.
+
+    For every sample pair :math:`(p_1, p_2)` it measures
+
+    .. math::
+
+        \big|\, \|g(p_1) - g(p_2)\| - \|p_1 - p_2\| \,\big| \le \mathrm{tol}
+        \quad\text{(condition 1, length)}
+
+        \| g(p_1) \times g(p_2) - g(p_1 \times p_2) \| \le \mathrm{tol}
+        \quad\text{(condition 2, cross products)}
+
+    A sample check can *refute* rigidity (one counterexample suffices) but never *prove* it:
+    ``ok=True`` only means no sample pair failed. The proof for rotations is Proposition 7.
+
+    Note on the notes' Definition 1: condition 2 is stated for points and applies the cross
+    product to :math:`g(p_1), g(p_2)` themselves. Taken literally, a translation
+    :math:`p \mapsto p + d` (:math:`d \ne 0`) preserves lengths but fails condition 2, although
+    it is a rigid motion. The usual statement applies condition 2 to vectors
+    :math:`v = p - q`, mapped by :math:`g_*(v) = g(p) - g(q)`; on points it singles out the
+    linear rigid maps, the rotations. This function checks the definition as written.
+
+    Parameters
+    ----------
+    g : callable
+        The map. Either vectorised, taking an (N, 3) array of points to an (N, 3) array, or
+        taking one point (3,) to (3,); which one is detected and a per-point ``g`` is applied
+        row by row.
+    points : array_like, optional
+        Shape (N, 3): every ordered pair of distinct points is checked (N(N−1) pairs).
+        Shape (K, 2, 3): the K given pairs. Default: ``n`` random pairs.
+    n : int, optional
+        Number of random pairs when ``points`` is not given (default 50).
+    seed : int or numpy.random.Generator, optional
+        Seed of the random pairs (default 0, so results are reproducible).
+    tol : float, optional
+        Absolute tolerance on both mismatches, default :data:`~course_lib.tolerance.TOL`.
+
+    Returns
+    -------
+    RigidCheck
+        ``.ok``, ``.condition`` (``"length"``, ``"cross product"`` or None), ``.message``,
+        ``.counterexample`` (the worst pair of the first failing condition) and ``.n_pairs``.
+        It displays as a ✓/✗ sentence in a notebook.
+
+    Raises
+    ------
+    TypeError
+        If ``g`` is not callable, or maps neither (N, 3) → (N, 3) nor (3,) → (3,); if points
+        are not numeric.
+    ValueError
+        If ``g`` returns the wrong number of points or NaN/inf, if ``points`` has a wrong shape
+        or holds NaN/inf, or ``n`` < 1, or ``tol`` < 0.
+
+    Examples
+    --------
+    >>> check_rigid(rotation_map(so3.rot_z(np.pi / 2))).ok
+    True
+    >>> result = check_rigid(reflection_map([0, 0, 1]), points=np.eye(3))
+    >>> result.ok, result.condition
+    (False, 'cross product')
+    >>> print(result)
+    ✗ g fails condition 2 (cross products): g(p1)×g(p2) = [0., 0., 1.], g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.], p2 = [0., 1., 0.]; checked 6 sample pairs.
+    """
+    if not callable(g):
+        raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
+    tol = _check_tol(tol)
+    p1, p2 = _pairs(points, n, seed)
+    k = p1.shape[0]
+    cross = np.cross(p1, p2)
+    image = _evaluate(g, np.concatenate([p1, p2, cross]), tol)
+    g1, g2, gc = image[:k], image[k : 2 * k], image[2 * k :]
+
+    len_lhs = np.linalg.norm(g1 - g2, axis=-1)
+    len_rhs = np.linalg.norm(p1 - p2, axis=-1)
+    len_mis = np.abs(len_lhs - len_rhs)
+    cross_lhs = np.cross(g1, g2)
+    cross_mis = np.linalg.norm(cross_lhs - gc, axis=-1)
+
+    label = _tol_label(tol)
+    plural = "pair" if k == 1 else "pairs"
+    len_fail = bool(np.any(len_mis > tol))
+    cross_fail = bool(np.any(cross_mis > tol))
+    if not (len_fail or cross_fail):
+        return RigidCheck(
+            ok=True,
+            condition=None,
+            message=(
+                f"✓ g is a rigid body transformation on these {k} sample {plural}: both conditions "
+                f"of Definition 1 hold within {label} (a sample can refute rigidity, never prove it)."
+            ),
+            counterexample=None,
+            n_pairs=k,
+        )
+    if len_fail:
+        w = int(np.argmax(len_mis))
+        c = Counterexample(p1[w], p2[w], float(len_lhs[w]), float(len_rhs[w]), float(len_mis[w]))
+        condition = "length"
+        detail = (
+            f"‖g(p1) − g(p2)‖ = {c.lhs:.6g} but ‖p1 − p2‖ = {c.rhs:.6g} "
+            f"(mismatch {c.mismatch:.1e} > {label})"
+        )
+        also = "; condition 2 (cross products) fails too" if cross_fail else ""
+    else:
+        w = int(np.argmax(cross_mis))
+        c = Counterexample(p1[w], p2[w], cross_lhs[w], gc[w], float(cross_mis[w]))
+        condition = "cross product"
+        detail = (
+            f"g(p1)×g(p2) = {_fmt_vec(c.lhs)}, g(p1×p2) = {_fmt_vec(c.rhs)} "
+            f"(‖difference‖ = {c.mismatch:.1e} > {label})"
+        )
+        also = ""
+    message = (
+        f"✗ g fails {_CONDITIONS[condition]}: {detail} for p1 = {_fmt_vec(c.p1)}, "
+        f"p2 = {_fmt_vec(c.p2)}{also}; checked {k} sample {plural}."
+    )
+    return RigidCheck(ok=False, condition=condition, message=message, counterexample=c, n_pairs=k)
+
+
+def rotation_map(R):
+    r"""The map :math:`p \mapsto R p` of a rotation matrix, for use with :func:`check_rigid`.
+
+    .. math:: g(p) = R\,p, \qquad R \in SO(3)
+
+    Parameters
+    ----------
+    R : array_like, shape (3, 3)
+        A rotation (checked with :func:`course_lib.so3.check_rotation`).
+
+    Returns
+    -------
+    callable
+        ``g(p)`` for ``p`` of shape (..., 3), returning shape (..., 3).
+
+    Raises
+    ------
+    ValueError
+        If ``R`` is not a single 3x3 rotation matrix.
+
+    Examples
+    --------
+    The notes' 90° turn about z takes x to y:
+
+    >>> g = rotation_map(so3.rot_z(np.pi / 2))
+    >>> np.round(g([1, 0, 0]), 12) + 0.0
+    array([0., 1., 0.])
+    """
+    R = so3.check_rotation(R)
+    if R.shape != (3, 3):
+        raise ValueError(f"rotation_map needs one 3x3 rotation, got shape {R.shape}")
+    R = R.copy()
+
+    def g(p):
+        return as_vectors(p, "p") @ R.T
+
+    g.__name__ = "rotation_map"
+    g.__doc__ = "p ↦ R p for R =\n" + np.array2string(R, precision=4)
+    return g
+
+
+def reflection_map(normal):
+    r"""The mirror across the plane through the origin with the given normal.
+
+    .. math:: g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
+
+    It preserves lengths (condition 1) but reverses orientation, so it fails condition 2 of
+    Definition 1: with ``normal = (0, 0, 1)`` it is the notes' counterexample,
+    :math:`g(x) \times g(y) = -g(x \times y)`.
+
+    Parameters
+    ----------
+    normal : array_like, shape (3,)
+        A nonzero normal vector of the mirror plane (it is normalised).
+
+    Returns
+    -------
+    callable
+        ``g(p)`` for ``p`` of shape (..., 3).
+
+    Raises
+    ------
+    ValueError
+        If ``normal`` is not a finite nonzero 3-vector (‖normal‖ ≤ TOL).
+
+    Examples
+    --------
+    >>> g = reflection_map([0, 0, 1])
+    >>> g([1.0, 2.0, 3.0])
+    array([ 1.,  2., -3.])
+    """
+    n = as_vectors(normal, "normal")
+    if n.shape != (3,):
+        raise ValueError(f"normal must be one 3-vector, got shape {n.shape}")
+    length = float(np.linalg.norm(n))
+    if length <= TOL:
+        raise ValueError(
+            f"normal must be nonzero: ‖normal‖ = {length:.1e} ≤ TOL = {TOL:g}; pass the normal of the mirror plane"
+        )
+    n = n / length
+    M = np.eye(3) - 2.0 * np.outer(n, n)
+
+    def g(p):
+        return as_vectors(p, "p") @ M.T
+
+    g.__name__ = "reflection_map"
+    g.__doc__ = f"p ↦ (I − 2nnᵀ) p for n = {_fmt_vec(n)}"
+    return g
+
+
+def translation_map(d):
+    r"""The translation :math:`p \mapsto p + d`.
+
+    .. math:: g(p) = p + d
+
+    It preserves lengths, but for :math:`d \ne 0` it fails condition 2 of Definition 1 as the
+    notes state it (on points): see the note in :func:`check_rigid`.
+
+    Parameters
+    ----------
+    d : array_like, shape (3,)
+        The displacement.
+
+    Returns
+    -------
+    callable
+        ``g(p)`` for ``p`` of shape (..., 3).
+
+    Raises
+    ------
+    ValueError
+        If ``d`` is not one finite 3-vector.
+
+    Examples
+    --------
+    >>> result = check_rigid(translation_map([1, 0, 0]))
+    >>> result.ok, result.condition
+    (False, 'cross product')
+    """
+    d = as_vectors(d, "d")
+    if d.shape != (3,):
+        raise ValueError(f"d must be one 3-vector, got shape {d.shape}")
+    d = d.copy()
+
+    def g(p):
+        return as_vectors(p, "p") + d
+
+    g.__name__ = "translation_map"
+    g.__doc__ = f"p ↦ p + d for d = {_fmt_vec(d)}"
+    return g

@@ -1,0 +1,1233 @@
+r"""Matplotlib helpers that redraw the figures of the course notes (section 0.1).
+
+The notes describe their figures with "Above: ..." captions. Every one of them is built here from
+a small set of primitives, so that a notebook cell stays three to six lines long:
+
+=====================================================  ============================================
+Figure in the notes                                    Composition
+=====================================================  ============================================
+a particle in a reference frame                        :func:`axes3d`, :func:`draw_frame`,
+                                                       :func:`draw_point`, :func:`draw_vector`
+a trajectory :math:`p(t)`, eq. (6)                     :func:`draw_curve` (``arrow=True``)
+a point seen from frames A and B                       two :func:`draw_frame` with different origins
+a free vector :math:`v = p - q = r - s`, eq. (7)-(8)   :func:`draw_point`, :func:`draw_vector`
+a rigid body made of particles                         :func:`draw_point` with an ``(n, 3)`` array
+the phone before and after a rotation, eq. (9)         :func:`axes_row`, :func:`draw_box` (marks),
+                                                       :func:`draw_segment`
+rotation about z by 90° versus a reflection            :func:`axes_row`, :func:`draw_frame`
+frames A, B, C of the :math:`R_{ab}, R_{ac}` example   :func:`draw_frame` with ``R=``
+:math:`v` in frames A and B, eq. (64)                  :func:`draw_frame`, :func:`draw_vector`
+:math:`a \times b` normal to the plane of a and b      :func:`draw_plane`, :func:`draw_vector`
+a particle orbiting the origin about :math:`\omega`    :func:`draw_arc`, :func:`draw_vector`
+the pendulum, :math:`\|v\| = |r\omega|`, eq. (118)     :func:`axes2d`, :func:`draw_pendulum`
+unit angular velocity: angle = time, eq. (125)         :func:`draw_arc`, :func:`draw_point`
+convergence of the series (124)/(126)                  :func:`plot_convergence`
+=====================================================  ============================================
+
+Conventions
+-----------
+* Figures are created by :func:`axes3d`, :func:`axes2d`, :func:`axes_row` or
+  :func:`plot_convergence`; each sets a title and axis labels, a fixed size, dpi and font, and
+  equal, fixed axis limits, so the same cell always gives the same picture. Nothing is random.
+* ``draw_*`` functions work on 3D axes with 3-vectors and (where it makes sense) on 2D axes
+  with 2-vectors. They return a :class:`Drawn`: the list of artists they added (iterate over it)
+  and, in ``.points``, the geometry they drew in world coordinates, so that a notebook can
+  compute with it (for example the distance between the two marked points on the phone).
+* Bad input (wrong shape, NaN or inf, a zero axis, parallel vectors spanning no plane, a box
+  orientation that is not a rotation) raises a ``ValueError``/``TypeError`` that names the
+  failed property; degeneracy is judged with the package tolerance ``TOL``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import matplotlib.pyplot as plt
+from matplotlib.patches import FancyArrowPatch, Polygon
+from mpl_toolkits.mplot3d import proj3d
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from . import so3
+from ._arrays import as_count, as_float_array, require_finite
+from .tolerance import TOL
+
+__all__ = [
+    "DPI",
+    "FONT_SIZE",
+    "TITLE_SIZE",
+    "FRAME_COLORS",
+    "Arrow",
+    "Drawn",
+    "axes3d",
+    "axes2d",
+    "axes_row",
+    "draw_frame",
+    "draw_vector",
+    "draw_point",
+    "draw_segment",
+    "draw_curve",
+    "draw_plane",
+    "draw_arc",
+    "draw_box",
+    "draw_pendulum",
+    "plot_convergence",
+]
+
+#: Colours of the x, y and z axes of every frame (red, green, blue, as in the notes).
+FRAME_COLORS = ("tab:red", "tab:green", "tab:blue")
+
+#: Fixed figure geometry and fonts: same cell, same PNG. They are passed explicitly to every
+#: figure, axes and text, never through rcParams: a ``plt.rc_context`` around figure creation
+#: would also roll back what the notebook backend sets when the first figure is made
+#: (interactive mode), and later figures would not be shown.
+DPI = 100
+FIGSIZE = (4.8, 4.8)
+PANEL_SIZE = 4.2
+FONT_SIZE = 11
+TITLE_SIZE = 12
+ARROW_HEAD = 12  # arrow head size in points (FancyArrowPatch mutation_scale)
+
+_LINESTYLES = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
+
+
+# --------------------------------------------------------------------------------------------
+# Small objects returned by the primitives
+# --------------------------------------------------------------------------------------------
+
+
+class Arrow(FancyArrowPatch):
+    """An arrow from ``start`` to ``end`` in data coordinates, on 2D or 3D axes.
+
+    The geometry is kept in the public attributes ``start`` and ``end`` (numpy arrays of length
+    2 or 3). On 3D axes the arrow is re-projected each time the figure is drawn.
+    """
+
+    def __init__(self, start, end, **kwargs):
+        self.start = np.array(start, dtype=float)
+        self.end = np.array(end, dtype=float)
+        kwargs.setdefault("arrowstyle", "-|>")
+        kwargs.setdefault("mutation_scale", ARROW_HEAD)
+        kwargs.setdefault("shrinkA", 0.0)
+        kwargs.setdefault("shrinkB", 0.0)
+        super().__init__(tuple(self.start[:2]), tuple(self.end[:2]), **kwargs)
+
+    def do_3d_projection(self, renderer=None):
+        """Project ``start`` and ``end`` with the 3D axes' current view; return the depth."""
+        xs, ys, zs = proj3d.proj_transform(*np.stack([self.start, self.end]).T, self.axes.M)
+        self.set_positions((xs[0], ys[0]), (xs[1], ys[1]))
+        return float(np.min(zs))
+
+
+class Drawn:
+    """What a ``draw_*`` function added to an axes.
+
+    Attributes
+    ----------
+    kind : str
+        Name of the primitive (``"frame"``, ``"vector"``, ``"box"``, ...).
+    artists : list of matplotlib.artist.Artist
+        Everything that was added to the axes. Iterating over a ``Drawn`` iterates over these.
+    points : numpy.ndarray, shape (k, d)
+        The key geometry in world coordinates (documented by each function), e.g. the arrow tips
+        of a frame, the points of an arc, the marked points of a box.
+    **extra
+        Further named results, documented by each function (e.g. ``corners``, ``velocity``).
+    """
+
+    def __init__(self, kind, artists, points, **extra):
+        self.kind = kind
+        self.artists = list(artists)
+        self.points = np.asarray(points, dtype=float)
+        for key, value in extra.items():
+            setattr(self, key, value)
+
+    def __iter__(self):
+        return iter(self.artists)
+
+    def __len__(self):
+        return len(self.artists)
+
+    def __repr__(self):
+        return f"<Drawn {self.kind}: {len(self.artists)} artists, {len(self.points)} points>"
+
+
+# --------------------------------------------------------------------------------------------
+# Input validation
+# --------------------------------------------------------------------------------------------
+
+
+def _dim(ax):
+    """2 or 3: the dimension of the space an axes draws."""
+    if not hasattr(ax, "figure") or not hasattr(ax, "plot"):
+        raise TypeError(f"ax must be a matplotlib Axes, got {type(ax).__name__}")
+    return 3 if getattr(ax, "name", "") == "3d" else 2
+
+
+def _require_3d(ax, func):
+    if _dim(ax) != 3:
+        raise TypeError(
+            f"{func} needs a 3D axes (projection='3d', e.g. from axes3d); got a 2D axes"
+        )
+
+
+def _array(x, name):
+    return require_finite(as_float_array(x, name), name)
+
+
+def _vector(x, name, d):
+    a = _array(x, name)
+    if a.shape != (d,):
+        raise ValueError(
+            f"{name} must be a {d}-vector of shape ({d},) on a {d}D axes, got shape {a.shape}"
+        )
+    return a
+
+
+def _points(x, name, d, min_count=1):
+    """(d,) or (n, d) -> (n, d)."""
+    a = _array(x, name)
+    if a.ndim == 1:
+        a = a[None, :]
+    if a.ndim != 2 or a.shape[1] != d:
+        raise ValueError(
+            f"{name} must have shape ({d},) or (n, {d}) on a {d}D axes, got shape {np.shape(x)}"
+        )
+    if a.shape[0] < min_count:
+        raise ValueError(f"{name} must hold at least {min_count} points, got {a.shape[0]}")
+    return a
+
+
+def _matrix(x, name, d):
+    a = _array(x, name)
+    if a.shape != (d, d):
+        raise ValueError(f"{name} must be a {d}x{d} matrix on a {d}D axes, got shape {a.shape}")
+    return a
+
+
+def _scalar(x, name, positive=False):
+    a = _array(x, name)
+    if a.shape != ():
+        raise ValueError(f"{name} must be a scalar, got shape {a.shape}")
+    value = float(a)
+    if positive and not value > 0:
+        raise ValueError(f"{name} must be > 0, got {value!r}")
+    return value
+
+
+def _origin(origin, d):
+    return np.zeros(d) if origin is None else _vector(origin, "origin", d)
+
+
+def _linestyle(style):
+    if not isinstance(style, str) or style not in _LINESTYLES:
+        raise ValueError(f"style must be one of {sorted(_LINESTYLES)}, got {style!r}")
+    return _LINESTYLES[style]
+
+
+def _text_arg(x, name):
+    if not isinstance(x, str):
+        raise TypeError(f"{name} must be a str, got {type(x).__name__}")
+    return x
+
+
+def _limits(lim):
+    """Scalar lim -> (-lim, lim); pair -> (lo, hi) with lo < hi."""
+    a = _array(lim, "lim")
+    if a.shape == ():
+        if not a > 0:
+            raise ValueError(f"lim must be > 0 (axes span [-lim, lim]), got {float(a)!r}")
+        return -float(a), float(a)
+    if a.shape == (2,) and a[0] < a[1]:
+        return float(a[0]), float(a[1])
+    raise ValueError(f"lim must be a positive number or a pair (lo, hi) with lo < hi, got {lim!r}")
+
+
+def _labels(labels, n, name="labels"):
+    if labels is None:
+        return [None] * n
+    if isinstance(labels, str):
+        labels = [labels]
+    labels = list(labels)
+    if len(labels) != n:
+        raise ValueError(f"{name} must hold one label per item: expected {n}, got {len(labels)}")
+    for lab in labels:
+        if lab is not None and not isinstance(lab, str):
+            raise TypeError(f"each of {name} must be a str or None, got {type(lab).__name__}")
+    return labels
+
+
+# --------------------------------------------------------------------------------------------
+# Low-level drawing on 2D or 3D axes
+# --------------------------------------------------------------------------------------------
+
+
+def _offset(ax):
+    """Distance, in data units, between a point and its label: 5% of the x span."""
+    lo, hi = ax.get_xlim()
+    return 0.05 * abs(hi - lo)
+
+
+def _text(ax, pos, s, color="black", **kwargs):
+    kwargs.setdefault("ha", "center")
+    kwargs.setdefault("va", "center")
+    return ax.text(*pos, s, color=color, fontsize=FONT_SIZE, **kwargs)
+
+
+def _arrow(ax, start, end, color, linestyle="-", linewidth=1.8):
+    arrow = Arrow(start, end, color=color, linestyle=linestyle, linewidth=linewidth)
+    if _dim(ax) == 3:
+        ax.add_artist(arrow)
+    else:
+        ax.add_patch(arrow)
+    return arrow
+
+
+def _line(ax, pts, color, linestyle="-", linewidth=1.8):
+    (line,) = ax.plot(*np.asarray(pts).T, color=color, linestyle=linestyle, linewidth=linewidth)
+    return line
+
+
+def _unit(v):
+    n = np.linalg.norm(v)
+    return v / n if n > 0 else v
+
+
+# --------------------------------------------------------------------------------------------
+# Figures and axes
+# --------------------------------------------------------------------------------------------
+
+
+def _setup3d(ax, title, lim, elev, azim, labels):
+    lo, hi = _limits(lim)
+    labels = _labels(labels, 3, "labels")
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(lo, hi)
+    ax.set_zlim(lo, hi)
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev=_scalar(elev, "elev"), azim=_scalar(azim, "azim"))
+    for setter, lab in zip((ax.set_xlabel, ax.set_ylabel, ax.set_zlabel), labels):
+        setter(lab or "", fontsize=FONT_SIZE)
+    ax.tick_params(axis="both", labelsize=FONT_SIZE - 2)
+    ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
+
+
+def _setup2d(ax, title, lim, labels):
+    lo, hi = _limits(lim)
+    labels = _labels(labels, 2, "labels")
+    ax.set_xlim(lo, hi)
+    ax.set_ylim(lo, hi)
+    ax.set_aspect("equal")
+    ax.set_xlabel(labels[0] or "", fontsize=FONT_SIZE)
+    ax.set_ylabel(labels[1] or "", fontsize=FONT_SIZE)
+    ax.axhline(0.0, color="0.85", linewidth=0.8, zorder=0)
+    ax.axvline(0.0, color="0.85", linewidth=0.8, zorder=0)
+    ax.tick_params(axis="both", labelsize=FONT_SIZE - 2)
+    ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
+
+
+def axes3d(title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$", "$z$"),
+           figsize=FIGSIZE):
+    r"""Create (or set up) a 3D axes: equal-aspect cube, labelled x/y/z axes and a title.
+
+    The cube is :math:`[-\mathrm{lim}, \mathrm{lim}]^3` (or :math:`[lo, hi]^3`), so lengths and
+    right angles look right: an orthonormal frame is drawn with three equal, perpendicular arrows.
+
+    Parameters
+    ----------
+    title : str
+        Title of the axes.
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D, optional
+        An existing 3D axes to set up; by default a new figure is created.
+    lim : float or (float, float), default 1.5
+        Half-width of the cube, or its ``(lo, hi)`` bounds (the same on all three axes).
+    elev, azim : float, default 20, -60
+        Viewing angles in degrees (matplotlib's ``view_init``).
+    labels : sequence of 3 str
+        Axis labels (mathtext allowed).
+    figsize : (float, float)
+        Figure size in inches, used only when a new figure is created (dpi is fixed at 100).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+
+    Raises
+    ------
+    TypeError
+        If ``ax`` is not a 3D axes or ``title`` is not a string.
+    ValueError
+        If ``lim`` is not positive (or not ``lo < hi``).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("A frame")
+    >>> ax.get_title(), ax.get_xlim() == (-1.5, 1.5)
+    ('A frame', True)
+    >>> plt.close(fig)
+    """
+    if ax is None:
+        _text_arg(title, "title")
+        _limits(lim)
+        fig = plt.figure(figsize=figsize, dpi=DPI)
+        fig.subplots_adjust(left=0.02, right=0.92, bottom=0.02, top=0.95)
+        ax = fig.add_subplot(projection="3d")
+    else:
+        _require_3d(ax, "axes3d")
+        fig = ax.figure
+    _setup3d(ax, title, lim, elev, azim, labels)
+    return fig, ax
+
+
+def axes2d(title, ax=None, lim=1.5, labels=("$x$", "$y$"), figsize=FIGSIZE):
+    r"""Create (or set up) a 2D axes with equal aspect, labelled axes and a title.
+
+    Used for planar figures such as the pendulum of eq. (117)-(118).
+
+    Parameters
+    ----------
+    title : str
+        Title of the axes.
+    ax : matplotlib.axes.Axes, optional
+        An existing 2D axes to set up; by default a new figure is created.
+    lim : float or (float, float), default 1.5
+        Half-width of the square window, or its ``(lo, hi)`` bounds.
+    labels : sequence of 2 str
+        Axis labels (mathtext allowed).
+    figsize : (float, float)
+        Figure size in inches for a new figure (dpi is fixed at 100).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : matplotlib.axes.Axes
+
+    Raises
+    ------
+    TypeError
+        If ``ax`` is a 3D axes or ``title`` is not a string.
+    ValueError
+        If ``lim`` is not positive (or not ``lo < hi``).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = axes2d("Pendulum", lim=(-1, 1))
+    >>> ax.get_xlabel(), ax.get_ylim() == (-1, 1)
+    ('$x$', True)
+    >>> plt.close(fig)
+    """
+    if ax is None:
+        _text_arg(title, "title")
+        _limits(lim)
+        fig, ax = plt.subplots(figsize=figsize, dpi=DPI)
+    else:
+        if _dim(ax) != 2:
+            raise TypeError("axes2d needs a 2D axes; got a 3D axes (use axes3d)")
+        fig = ax.figure
+    _setup2d(ax, title, lim, labels)
+    return fig, ax
+
+
+def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
+    r"""A figure with one panel per title, side by side, for before/after comparisons.
+
+    For example the phone at time 0 and at time t, or the rotation about z by 90° next to the
+    reflection that is not a rigid body transformation.
+
+    Parameters
+    ----------
+    titles : sequence of str
+        One title per panel (at least one).
+    kind : {"3d", "2d"}
+        Kind of the panels.
+    lim : float or (float, float)
+        Limits of every panel (see :func:`axes3d`).
+    elev, azim : float
+        Viewing angles of 3D panels.
+    labels : sequence of str, optional
+        Axis labels; defaults to ``$x$, $y$(, $z$)``.
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    axes : list of Axes
+        One axes per title, left to right.
+
+    Raises
+    ------
+    TypeError
+        If ``titles`` is a single string or holds non-strings.
+    ValueError
+        If ``titles`` is empty, ``kind`` is unknown or ``lim`` is invalid.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, axes = axes_row(["time 0", "time t"])
+    >>> [a.get_title() for a in axes]
+    ['time 0', 'time t']
+    >>> plt.close(fig)
+    """
+    if isinstance(titles, str):
+        raise TypeError("titles must be a sequence of str (one per panel), got a single str")
+    titles = list(titles)
+    if not titles:
+        raise ValueError("titles must hold at least one title (one per panel), got none")
+    for t in titles:
+        _text_arg(t, "each title")
+    if kind not in ("3d", "2d"):
+        raise ValueError(f"kind must be '3d' or '2d', got {kind!r}")
+    _limits(lim)
+    n = len(titles)
+    fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI)
+    if kind == "3d":
+        fig.subplots_adjust(left=0.02, right=0.95, bottom=0.02, top=0.95, wspace=0.1)
+    axes = [
+        fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None)
+        for i in range(n)
+    ]
+    for ax, title in zip(axes, titles):
+        if kind == "3d":
+            _setup3d(ax, title, lim, elev, azim, labels or ("$x$", "$y$", "$z$"))
+        else:
+            _setup2d(ax, title, lim, labels or ("$x$", "$y$"))
+    return fig, axes
+
+
+# --------------------------------------------------------------------------------------------
+# Primitives
+# --------------------------------------------------------------------------------------------
+
+
+def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", colors=FRAME_COLORS,
+               axis_names=("x", "y", "z")):
+    r"""Draw a reference frame: the columns of ``R`` as arrows from ``origin``.
+
+    The columns of :math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26) are the axes of frame B
+    seen in frame A, so the i-th arrow goes from :math:`o` to
+
+    .. math:: o + s\, R e_i, \qquad i = 1, 2, 3,
+
+    and is labelled :math:`x_A, y_A, z_A` (subscript ``label``). ``R`` need not be a rotation:
+    the notes' counterexample draws the frame after a reflection (use
+    ``so3.check_rotation`` first when a rotation is required).
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D axes (or a 2D axes, with a 2x2 ``R`` and 2-vectors).
+    R : array_like, shape (3, 3) or (2, 2), optional
+        Matrix whose columns are the frame axes; identity by default.
+    origin : array_like, shape (3,) or (2,), optional
+        Origin of the frame; the zero vector by default.
+    label : str or None, default "A"
+        Frame name, used as subscript of the axis labels and written at the origin.
+    scale : float, default 1
+        Length factor of the arrows.
+    style : {"solid", "dashed", "dotted", "dashdot"}
+        Line style (e.g. dashed for the frame before a motion).
+    colors : sequence of 3 (or 2) colours
+        Colours of the x, y, z arrows.
+    axis_names : sequence of 3 (or 2) str
+        Names of the axes used in the labels.
+
+    Returns
+    -------
+    Drawn
+        ``artists``: the arrows, their labels, the frame name; ``points``: the arrow tips,
+        shape (d, d), row i is :math:`o + s R e_i`; ``origin``: the origin.
+
+    Raises
+    ------
+    ValueError
+        If ``R`` or ``origin`` has the wrong shape or non-finite entries, a column of ``R`` has
+        norm ``<= TOL`` (an axis of length zero), ``scale <= 0`` or ``style`` is unknown.
+    TypeError
+        If the inputs are not numeric, or labels are not strings.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("Frame B")
+    >>> frame = draw_frame(ax, R=[[-1, 0, 0], [0, 1, 0], [0, 0, -1]], label="B")
+    >>> np.allclose(frame.points[0], [-1, 0, 0])
+    True
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    R = np.eye(d) if R is None else _matrix(R, "R", d)
+    o = _origin(origin, d)
+    s = _scalar(scale, "scale", positive=True)
+    ls = _linestyle(style)
+    colors = list(colors)
+    names = list(axis_names)
+    if len(colors) != d or len(names) != d:
+        raise ValueError(
+            f"colors and axis_names must hold {d} entries each, "
+            f"got {len(colors)} and {len(names)}"
+        )
+    if label is not None:
+        _text_arg(label, "label")
+    col_norms = np.linalg.norm(R, axis=0)
+    for i, n in enumerate(col_norms):
+        if n <= TOL:
+            raise ValueError(
+                f"R column {i} ({names[i]} axis) has zero length: "
+                f"‖R e_{i + 1}‖ = {n:.1e} <= TOL = {TOL:g}"
+            )
+    tips = o + s * R.T
+    artists = []
+    pad = _offset(ax)
+    for i in range(d):
+        artists.append(_arrow(ax, o, tips[i], colors[i], ls))
+        name = f"${names[i]}_{{{label}}}$" if label else f"${names[i]}$"
+        artists.append(_text(ax, tips[i] + pad * _unit(R[:, i]), name, color=colors[i]))
+    if label:
+        away = -_unit(R.sum(axis=1))  # opposite the axes, so the name does not sit on an arrow
+        artists.append(_text(ax, o + 1.2 * pad * away, f"${label}$"))
+    return Drawn("frame", artists, tips, origin=o)
+
+
+def draw_vector(ax, v, origin=None, label=None, color="black", style="solid", linewidth=1.8):
+    r"""Draw the vector ``v`` as an arrow from ``origin`` to ``origin + v``.
+
+    A vector is the difference of two points, :math:`v = p - q` (eq. 7); drawing it from
+    different origins shows that it is a free vector (eq. 8).
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D axes (3-vectors) or a 2D axes (2-vectors).
+    v : array_like, shape (3,) or (2,)
+        The vector. A zero vector draws a dot at the origin.
+    origin : array_like, optional
+        Tail of the arrow; the zero vector by default.
+    label : str, optional
+        Text written just beyond the tip (mathtext allowed, e.g. ``"$v$"``).
+    color : colour, default "black"
+    style : {"solid", "dashed", "dotted", "dashdot"}
+    linewidth : float, default 1.8
+
+    Returns
+    -------
+    Drawn
+        ``points``: shape (2, d), the tail and the tip.
+
+    Raises
+    ------
+    ValueError
+        If ``v`` or ``origin`` has the wrong shape or non-finite entries, or ``style`` is unknown.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("A free vector")
+    >>> arrow = draw_vector(ax, [1, 1, 0], origin=[0, 0, 1], label="$v$")
+    >>> np.allclose(arrow.points[1], [1, 1, 1]), len(arrow)
+    (True, 2)
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    v = _vector(v, "v", d)
+    o = _origin(origin, d)
+    ls = _linestyle(style)
+    lw = _scalar(linewidth, "linewidth", positive=True)
+    tip = o + v
+    if np.linalg.norm(v) == 0.0:
+        artists = [ax.scatter(*o[:, None], color=color, s=12)]
+    else:
+        artists = [_arrow(ax, o, tip, color, ls, lw)]
+    if label is not None:
+        pos = tip + _offset(ax) * _unit(v)
+        artists.append(_text(ax, pos, _text_arg(label, "label"), color=color))
+    return Drawn("vector", artists, np.stack([o, tip]))
+
+
+def draw_point(ax, p, label=None, color="black", size=30, marker="o"):
+    r"""Draw one point or a set of points (e.g. the particles of a rigid body).
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D or 2D axes.
+    p : array_like, shape (d,) or (n, d)
+        The point(s), in the coordinates of the axes.
+    label : str or sequence of str, optional
+        One label per point, written next to it (``None`` entries are skipped).
+    color : colour, default "black"
+    size : float, default 30
+        Marker area in points².
+    marker : str, default "o"
+
+    Returns
+    -------
+    Drawn
+        ``points``: shape (n, d).
+
+    Raises
+    ------
+    ValueError
+        If ``p`` has the wrong shape or non-finite entries, or the number of labels differs from
+        the number of points.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("Particles")
+    >>> body = draw_point(ax, [[0, 0, 0], [1, 0, 0], [0, 1, 0]], label=["$p_1$", "$p_2$", None])
+    >>> body.points.shape, len(body)
+    ((3, 3), 3)
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    P = _points(p, "p", d)
+    labels = _labels(label, len(P), "label")
+    s = _scalar(size, "size", positive=True)
+    kwargs = {"depthshade": False} if d == 3 else {}
+    artists = [ax.scatter(*P.T, color=color, s=s, marker=marker, **kwargs)]
+    pad = _offset(ax)
+    shift = np.full(d, pad / np.sqrt(d))
+    for q, lab in zip(P, labels):
+        if lab is not None:
+            artists.append(_text(ax, q + shift, lab, color=color, ha="left", va="bottom"))
+    return Drawn("point", artists, P)
+
+
+def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2):
+    r"""Draw the segment from ``p`` to ``q``, e.g. the distance :math:`\|p_1 - p_2\|` of eq. (9).
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D or 2D axes.
+    p, q : array_like, shape (d,)
+        End points.
+    label : str, optional
+        Text written at the midpoint (e.g. ``f"{d:.2f}"``).
+    color : colour, default "black"
+    style : {"dashed", "solid", "dotted", "dashdot"}
+    linewidth : float, default 1.2
+
+    Returns
+    -------
+    Drawn
+        ``points``: shape (2, d), ``p`` and ``q``; ``length``: :math:`\|p - q\|`.
+
+    Raises
+    ------
+    ValueError
+        If ``p`` or ``q`` has the wrong shape or non-finite entries, or ``style`` is unknown.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("Distance")
+    >>> seg = draw_segment(ax, [0, 0, 0], [0, 3, 4], label="5")
+    >>> float(seg.length)
+    5.0
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    p = _vector(p, "p", d)
+    q = _vector(q, "q", d)
+    ls = _linestyle(style)
+    lw = _scalar(linewidth, "linewidth", positive=True)
+    artists = [_line(ax, [p, q], color, ls, lw)]
+    if label is not None:
+        mid = (p + q) / 2
+        pos = mid + np.full(d, _offset(ax) / np.sqrt(d))
+        text = _text_arg(label, "label")
+        artists.append(_text(ax, pos, text, color=color, ha="left", va="bottom"))
+    return Drawn("segment", artists, np.stack([p, q]), length=float(np.linalg.norm(p - q)))
+
+
+def draw_curve(ax, points, label=None, color="black", style="solid", arrow=False, linewidth=1.8):
+    r"""Draw a curve through ``points``: a trajectory :math:`p(t)` (eq. 6) or an orbit.
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D or 2D axes.
+    points : array_like, shape (n, d), n >= 2
+        Samples of the curve, in order (e.g. :math:`p(t_k)`).
+    label : str, optional
+        Text written next to the last point.
+    color : colour, default "black"
+    style : {"solid", "dashed", "dotted", "dashdot"}
+    arrow : bool, default False
+        Put an arrow head at the last point to show the direction of motion.
+    linewidth : float, default 1.8
+
+    Returns
+    -------
+    Drawn
+        ``points``: the samples, shape (n, d).
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not (n, d) with n >= 2 or has non-finite entries.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("A trajectory")
+    >>> t = np.linspace(0, 1, 50)
+    >>> p = np.stack([np.cos(t), np.sin(t), t], axis=-1)
+    >>> curve = draw_curve(ax, p, label="$p(t)$", arrow=True)
+    >>> curve.points.shape, len(curve)
+    ((50, 3), 3)
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    P = _points(points, "points", d, min_count=2)
+    ls = _linestyle(style)
+    lw = _scalar(linewidth, "linewidth", positive=True)
+    artists = [_line(ax, P, color, ls, lw)]
+    if arrow:
+        # the last step with non-zero length gives the direction of motion
+        steps = np.linalg.norm(np.diff(P, axis=0), axis=1)
+        moving = np.nonzero(steps > 0)[0]
+        if moving.size:
+            k = moving[-1]
+            artists.append(_arrow(ax, P[k], P[k + 1], color, "-", lw))
+    if label is not None:
+        pos = P[-1] + np.full(d, _offset(ax) / np.sqrt(d))
+        text = _text_arg(label, "label")
+        artists.append(_text(ax, pos, text, color=color, ha="left", va="bottom"))
+    return Drawn("curve", artists, P)
+
+
+def draw_plane(ax, a, b, origin=None, label=None, color="tab:gray", alpha=0.25, tol=TOL):
+    r"""Shade the parallelogram spanned by ``a`` and ``b`` (a patch of the plane of a and b).
+
+    Its corners are :math:`o,\; o + a,\; o + a + b,\; o + b`. Drawn together with
+    :math:`a \times b`, it shows that the cross product is normal to the whole plane.
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D or 2D axes.
+    a, b : array_like, shape (d,)
+        Spanning vectors; they must not be parallel.
+    origin : array_like, shape (d,), optional
+        Common tail of ``a`` and ``b``; zero by default.
+    label : str, optional
+        Text written at the centre of the patch.
+    color : colour, default "tab:gray"
+    alpha : float, default 0.25
+        Opacity of the patch.
+    tol : float, default TOL
+        ``a`` and ``b`` are parallel when :math:`\|a \times b\| \le` tol (in 2D,
+        :math:`|a_1 b_2 - a_2 b_1| \le` tol).
+
+    Returns
+    -------
+    Drawn
+        ``points``: the four corners, shape (4, d), in the order above; ``normal``:
+        :math:`a \times b` (3D only, else ``None``).
+
+    Raises
+    ------
+    ValueError
+        If ``a`` and ``b`` are parallel (they span no plane), or have the wrong shape or
+        non-finite entries.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("Plane of a and b")
+    >>> patch = draw_plane(ax, [1, 0, 0], [0.5, 1, 0])
+    >>> patch.normal.tolist()
+    [0.0, 0.0, 1.0]
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    a = _vector(a, "a", d)
+    b = _vector(b, "b", d)
+    o = _origin(origin, d)
+    tol = _scalar(tol, "tol", positive=True)
+    if d == 3:
+        normal = np.cross(a, b)
+        area = float(np.linalg.norm(normal))
+    else:
+        normal = None
+        area = float(abs(a[0] * b[1] - a[1] * b[0]))
+    if area <= tol:
+        raise ValueError(
+            f"a and b are parallel and span no plane: ‖a × b‖ = {area:.1e} <= TOL = {tol:g}"
+        )
+    corners = np.stack([o, o + a, o + a + b, o + b])
+    if d == 3:
+        patch = Poly3DCollection([corners], facecolor=color, edgecolor=color, alpha=alpha)
+        ax.add_collection3d(patch)
+    else:
+        patch = Polygon(corners, closed=True, facecolor=color, edgecolor=color, alpha=alpha)
+        ax.add_patch(patch)
+    artists = [patch]
+    if label is not None:
+        artists.append(_text(ax, corners.mean(axis=0), _text_arg(label, "label"), color="black"))
+    return Drawn("plane", artists, corners, normal=normal)
+
+
+def _rotate_about(k, thetas, v):
+    """Rotate v about the unit axis k by each angle: rows e^{k̂ θ_j} v (Rodrigues, eq. 159)."""
+    return so3.exp(thetas[:, None] * k) @ v
+
+
+def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black", style="solid",
+             arrow=True, tol=TOL):
+    r"""Draw the arc swept by the vector ``start`` rotating about ``axis`` by ``angle``.
+
+    The arc is the set of points
+
+    .. math:: c + e^{\hat\omega \theta} s, \qquad \theta \in [0, \mathrm{angle}],
+
+    with :math:`\omega = \mathrm{axis}/\|\mathrm{axis}\|` (eq. 125): every point stays at the
+    same distance from the axis, and the swept angle is ``angle`` (positive is counterclockwise
+    seen from the tip of the axis, by the right hand rule). On a 2D axes the rotation is in the
+    plane about ``center`` and ``axis`` must be ``None``.
+
+    Parameters
+    ----------
+    ax : Axes
+        A 3D axes, or a 2D axes with ``axis=None``.
+    axis : array_like, shape (3,), or None
+        Direction of the axis of rotation (need not be unit).
+    start : array_like, shape (d,)
+        Vector from ``center`` to the first point of the arc.
+    angle : float
+        Swept angle in radians (any sign; 0 gives a single point).
+    center : array_like, shape (d,), optional
+        A point on the axis (3D) or the centre of the arc (2D); zero by default.
+    n : int, default 60
+        Number of points on the arc (>= 2).
+    label : str, optional
+        Text written at the middle of the arc (e.g. ``r"$\theta$"``).
+    color : colour, default "black"
+    style : {"solid", "dashed", "dotted", "dashdot"}
+    arrow : bool, default True
+        Put an arrow head at the end of the arc.
+    tol : float, default TOL
+        ``axis`` is zero when its norm is <= tol; ``start`` lies on the axis when its distance
+        from the axis is <= tol.
+
+    Returns
+    -------
+    Drawn
+        ``points``: the arc, shape (n, d); ``axis``: the unit axis (3D) or ``None``;
+        ``radius``: distance of the arc from the axis (centre).
+
+    Raises
+    ------
+    ValueError
+        If ``axis`` is zero, ``start`` lies on the axis, ``n < 2``, or an input has the wrong
+        shape or non-finite entries.
+    TypeError
+        If ``axis`` is given on a 2D axes or missing on a 3D axes.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("Rotation about z")
+    >>> arc = draw_arc(ax, [0, 0, 1], [1, 0, 0], np.pi / 2, label=r"$\theta$")
+    >>> np.allclose(arc.points[-1], [0, 1, 0])
+    True
+    >>> plt.close(fig)
+    """
+    d = _dim(ax)
+    s = _vector(start, "start", d)
+    c = _origin(center, d)
+    theta = _scalar(angle, "angle")
+    tol = _scalar(tol, "tol", positive=True)
+    n = as_count(n, "n (number of points on the arc)", minimum=2)
+    ls = _linestyle(style)
+    thetas = np.linspace(0.0, theta, n)
+    if d == 3:
+        if axis is None:
+            raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
+        w = _vector(axis, "axis", 3)
+        norm = float(np.linalg.norm(w))
+        if norm <= tol:
+            raise ValueError(f"axis must be non-zero: ‖axis‖ = {norm:.1e} <= TOL = {tol:g}")
+        k = w / norm
+        radius = float(np.linalg.norm(s - (k @ s) * k))
+        if radius <= tol:
+            raise ValueError(
+                f"start lies on the axis, so the arc is a single point: "
+                f"distance from the axis = {radius:.1e} <= TOL = {tol:g}"
+            )
+        pts = c + _rotate_about(k, thetas, s)
+    else:
+        if axis is not None:
+            raise TypeError("draw_arc on a 2D axes rotates in the plane: pass axis=None")
+        k = None
+        radius = float(np.linalg.norm(s))
+        if radius <= tol:
+            raise ValueError(f"start must be non-zero: ‖start‖ = {radius:.1e} <= TOL = {tol:g}")
+        cos, sin = np.cos(thetas), np.sin(thetas)
+        pts = c + np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
+    artists = [_line(ax, pts, color, ls)]
+    if arrow and theta != 0.0:
+        artists.append(_arrow(ax, pts[-2], pts[-1], color))
+    if label is not None:
+        mid = pts[len(pts) // 2]
+        if d == 3:
+            out = mid - c - (k @ (mid - c)) * k  # away from the axis
+        else:
+            out = mid - c
+        pos = mid + _offset(ax) * _unit(out)
+        artists.append(_text(ax, pos, _text_arg(label, "label"), color=color))
+    return Drawn("arc", artists, pts, axis=k, radius=radius)
+
+
+_BOX_FACES = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
+
+
+def draw_box(ax, R=None, center=None, size=(0.5, 1.0, 0.1), marks=None, mark_labels=None,
+             frame=None, color="tab:blue", alpha=0.25, tol=TOL):
+    r"""Draw a rigid box (e.g. the phone of eq. 9) with orientation ``R`` about ``center``.
+
+    A point with body coordinates :math:`m` (relative to the box centre) is drawn at the world
+    position
+
+    .. math:: p = c + R\, m,
+
+    so the distances between marked points do not change under rotation (Proposition 7).
+
+    Parameters
+    ----------
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+        A 3D axes.
+    R : array_like, shape (3, 3), optional
+        Orientation of the box; must be a rotation (identity by default).
+    center : array_like, shape (3,), optional
+        World position of the box centre; zero by default.
+    size : array_like, shape (3,), default (0.5, 1.0, 0.1)
+        Edge lengths along the body x, y, z axes (all > 0).
+    marks : array_like, shape (3,) or (k, 3), optional
+        Points on the body, in body coordinates relative to the centre.
+    mark_labels : str or sequence of str, optional
+        One label per mark (e.g. ``["$p_1$", "$p_2$"]``).
+    frame : str, optional
+        If given, also draw the body frame at the centre with this name.
+    color : colour, default "tab:blue"
+    alpha : float, default 0.25
+        Opacity of the faces.
+    tol : float, default TOL
+        Tolerance of the rotation check on ``R``.
+
+    Returns
+    -------
+    Drawn
+        ``points``: world coordinates of the marks, shape (k, 3) (k = 0 without marks);
+        ``corners``: the 8 world corners, shape (8, 3).
+
+    Raises
+    ------
+    ValueError
+        If ``R`` is not a rotation (``so3.check_rotation``), ``size`` is not positive, or an
+        input has the wrong shape or non-finite entries.
+    TypeError
+        If ``ax`` is a 2D axes.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes3d("The phone")
+    >>> marks = [[0.2, 0.4, 0.05], [-0.2, -0.4, 0.05]]
+    >>> phone = draw_box(ax, marks=marks, mark_labels=["$p_1$", "$p_2$"])
+    >>> round(float(np.linalg.norm(phone.points[0] - phone.points[1])), 6)
+    0.894427
+    >>> plt.close(fig)
+    """
+    _require_3d(ax, "draw_box")
+    tol = _scalar(tol, "tol", positive=True)
+    if R is None:
+        R = np.eye(3)
+    else:
+        R = _matrix(R, "R", 3)
+        so3.check_rotation(R, tol=tol)
+    c = _origin(center, 3)
+    size = _vector(size, "size", 3)
+    if not np.all(size > 0):
+        raise ValueError(f"size must have three positive edge lengths, got {size.tolist()}")
+    half = size / 2
+    signs = (-1.0, 1.0)
+    body_corners = np.array([[sx, sy, sz] for sx in signs for sy in signs for sz in signs]) * half
+    corners = c + body_corners @ R.T
+    faces = [corners[list(f)] for f in _BOX_FACES]
+    box = Poly3DCollection(faces, facecolor=color, edgecolor="0.25", linewidth=0.8, alpha=alpha)
+    ax.add_collection3d(box)
+    artists = [box]
+    if marks is None:
+        world = np.zeros((0, 3))
+        if mark_labels is not None:
+            raise ValueError("mark_labels given without marks")
+    else:
+        M = _points(marks, "marks", 3)
+        world = c + M @ R.T
+        artists.extend(draw_point(ax, world, label=mark_labels, color="black").artists)
+    if frame is not None:
+        artists.extend(draw_frame(ax, R, origin=c, label=_text_arg(frame, "frame"),
+                                  scale=0.6 * float(size.max())).artists)
+    return Drawn("box", artists, world, corners=corners)
+
+
+def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
+    r"""Draw the planar pendulum of eq. (117)-(118): rod, bob, angle and velocity.
+
+    With the angle :math:`\theta` measured from the downward vertical, the bob is at
+    :math:`c + r(\sin\theta, -\cos\theta)` and its velocity is
+
+    .. math:: v = r\omega\,(\cos\theta, \sin\theta), \qquad \|v\| = |r\omega|,
+
+    drawn in green from the bob (times ``velocity_scale``, for display only).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        A 2D axes (e.g. from :func:`axes2d`).
+    theta : float
+        Angle from the downward vertical, in radians.
+    r : float, default 1
+        Rod length (> 0).
+    omega : float, default 1
+        Angular velocity :math:`\dot\theta` in rad/s (0 draws no velocity arrow).
+    pivot : array_like, shape (2,), optional
+        Point of attachment; zero by default.
+    velocity_scale : float, default 1
+        Display factor of the velocity arrow (> 0).
+
+    Returns
+    -------
+    Drawn
+        ``points``: the pivot and the bob, shape (2, 2); ``velocity``: :math:`v` (unscaled).
+
+    Raises
+    ------
+    ValueError
+        If ``r <= 0``, ``velocity_scale <= 0`` or an input is not finite.
+    TypeError
+        If ``ax`` is a 3D axes.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax = axes2d("Pendulum")
+    >>> pend = draw_pendulum(ax, np.pi / 6, r=1.2, omega=0.5)
+    >>> round(float(np.linalg.norm(pend.velocity)), 12)
+    0.6
+    >>> plt.close(fig)
+    """
+    if _dim(ax) != 2:
+        raise TypeError("draw_pendulum needs a 2D axes (e.g. from axes2d); got a 3D axes")
+    th = _scalar(theta, "theta")
+    r = _scalar(r, "r", positive=True)
+    om = _scalar(omega, "omega")
+    vs = _scalar(velocity_scale, "velocity_scale", positive=True)
+    c = _origin(pivot, 2)
+    bob = c + r * np.array([np.sin(th), -np.cos(th)])
+    v = r * om * np.array([np.cos(th), np.sin(th)])
+    artists = []
+    artists.extend(draw_segment(ax, c, c + np.array([0.0, -r]), color="0.5", style="dotted"))
+    artists.extend(draw_segment(ax, c, bob, style="solid", linewidth=2.0))
+    beside_rod = _offset(ax) * np.array([np.cos(th), np.sin(th)])
+    artists.append(_text(ax, (c + bob) / 2 + beside_rod, "$r$"))
+    artists.extend(draw_point(ax, c, color="black", size=20, marker="s"))
+    artists.extend(draw_point(ax, bob, color="black", size=120))
+    if th != 0.0:
+        artists.extend(
+            draw_arc(ax, None, [0.0, -0.3 * r], th, center=c, label=r"$\theta$", arrow=False)
+        )
+    if om != 0.0:
+        artists.extend(draw_vector(ax, vs * v, origin=bob, label="$v$", color="tab:green"))
+    return Drawn("pendulum", artists, np.stack([c, bob]), velocity=v)
+
+
+def plot_convergence(terms, errors, title="Convergence of the series", ax=None, label=None,
+                     show_tol=True, xlabel="number of terms $N$",
+                     ylabel=r"error $\|\cdot\|_F$ (log scale)"):
+    r"""Semilog plot of an approximation error against the number of series terms.
+
+    Made for the truncated series of the matrix exponential (eq. 124, 126),
+
+    .. math:: \Big\| \sum_{n=0}^{N-1} \frac{A^n}{n!} - e^{A} \Big\|_F,
+
+    but any non-negative errors can be plotted. Exact zeros cannot be shown on a log axis and
+    are left out of the line; a dotted line marks the tolerance ``TOL``.
+
+    Parameters
+    ----------
+    terms : array_like, shape (k,)
+        Numbers of terms (the x values).
+    errors : array_like, shape (k,), or dict of str -> array_like
+        Errors for each entry of ``terms``; a dict plots one labelled line per entry.
+    title : str
+        Title of the axes.
+    ax : matplotlib.axes.Axes, optional
+        A 2D axes to draw into; a new figure by default.
+    label : str, optional
+        Legend label of a single error array.
+    show_tol : bool, default True
+        Draw the horizontal line ``y = TOL``.
+    xlabel, ylabel : str
+        Axis labels.
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : matplotlib.axes.Axes
+
+    Raises
+    ------
+    ValueError
+        If shapes differ, an error is negative or non-finite, or no error is positive.
+    TypeError
+        If ``ax`` is a 3D axes.
+
+    Examples
+    --------
+    >>> import math, matplotlib.pyplot as plt
+    >>> n = [1, 2, 3, 4, 5]
+    >>> errors = [abs(math.e - sum(1 / math.factorial(j) for j in range(k))) for k in n]
+    >>> fig, ax = plot_convergence(n, errors)
+    >>> ax.get_yscale(), len(ax.get_lines())
+    ('log', 2)
+    >>> plt.close(fig)
+    """
+    x = _array(terms, "terms")
+    if x.ndim != 1 or x.size == 0:
+        raise ValueError(f"terms must be a non-empty 1-D array, got shape {x.shape}")
+    series = errors if isinstance(errors, dict) else {label: errors}
+    ys = {}
+    for name, err in series.items():
+        y = _array(err, "errors" if name is None else f"errors[{name!r}]")
+        if y.shape != x.shape:
+            raise ValueError(f"errors must have the shape of terms {x.shape}, got {y.shape}")
+        if (y < 0).any():
+            raise ValueError(f"errors must be >= 0 (they are norms), got min {y.min():.3g}")
+        if not (y > 0).any():
+            raise ValueError("no error is positive: nothing to show on a log scale")
+        ys[name] = np.where(y > 0, y, np.nan)
+    if ax is None:
+        _text_arg(title, "title")
+        fig, ax = plt.subplots(figsize=(5.6, 4.0), dpi=DPI)
+    else:
+        if _dim(ax) != 2:
+            raise TypeError("plot_convergence needs a 2D axes; got a 3D axes")
+        fig = ax.figure
+    for name, y in ys.items():
+        ax.plot(x, y, marker="o", markersize=4, linewidth=1.8, label=name)
+    ax.set_yscale("log")
+    if show_tol:
+        ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=f"TOL = {TOL:g}")
+    ax.set_xlabel(_text_arg(xlabel, "xlabel"), fontsize=FONT_SIZE)
+    ax.set_ylabel(_text_arg(ylabel, "ylabel"), fontsize=FONT_SIZE)
+    ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
+    ax.tick_params(axis="both", labelsize=FONT_SIZE - 2)
+    ax.grid(True, which="major", color="0.9")
+    if any(name is not None for name in ys) or show_tol:
+        ax.legend(fontsize=FONT_SIZE - 1)
+    return fig, ax

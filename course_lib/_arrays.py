@@ -91,3 +91,11 @@ def as_count(n, name="n", minimum=0):
     if n < minimum:
         raise ValueError(f"{name} must be >= {minimum}, got {n}")
     return int(n)
+
+
+def fmt_vector(v, digits=4):
+    """A short, platform-stable text form of a vector or scalar (rounded, no negative zeros)."""
+    arr = np.round(np.asarray(v, dtype=np.float64), digits) + 0.0
+    if arr.ndim == 0:
+        return f"{float(arr):.{digits}g}"
+    return np.array2string(arr, separator=", ", precision=digits, suppress_small=True)

@@ -14,13 +14,12 @@ Every check compares a residual norm with the one tolerance of the package,
 :data:`course_lib.tolerance.TOL`.
 """
 
-import numbers
 
 import numpy as np
 
 from . import so3
 from ._arrays import as_matrices, as_vectors
-from .tolerance import TOL
+from .tolerance import TOL, check_tol, tol_label
 
 __all__ = [
     "is_orthonormal",
@@ -38,29 +37,6 @@ _BASIS_NAMES = ("e1", "e2", "e3")
 # --------------------------------------------------------------------------------------------
 # private helpers (also used by course_lib.rigid and course_lib.groups)
 # --------------------------------------------------------------------------------------------
-
-
-def _check_tol(tol):
-    """Return ``tol`` as a float after checking it is a finite real number >= 0."""
-    if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
-        raise TypeError(f"tol must be a real number (default TOL = {TOL:g}), got {type(tol).__name__} {tol!r}")
-    tol = float(tol)
-    if not np.isfinite(tol) or tol < 0:
-        raise ValueError(f"tol must be a finite number >= 0 (default TOL = {TOL:g}), got {tol!r}")
-    return tol
-
-
-def _tol_label(tol):
-    """``'TOL = 1e-09'`` for the package tolerance, ``'tol = ...'`` for an explicit one."""
-    return f"TOL = {tol:g}" if tol == TOL else f"tol = {tol:g}"
-
-
-def _fmt_vec(v, digits=4):
-    """A short, platform-stable text form of a vector or scalar (rounded, no negative zeros)."""
-    arr = np.round(np.asarray(v, dtype=np.float64), digits) + 0.0
-    if arr.ndim == 0:
-        return f"{float(arr):.{digits}g}"
-    return np.array2string(arr, separator=", ", precision=digits, suppress_small=True)
 
 
 def _as_bool(result):
@@ -81,7 +57,7 @@ def _handedness_residual(frame):
 
 def _diagnose(frame, tol, names=_BASIS_NAMES):
     """Explain why one (3, 3) frame is not orthonormal and right-handed, or return None."""
-    label = _tol_label(tol)
+    label = tol_label(tol)
     e = [frame[:, i] for i in range(3)]
     residual = float(_orthonormality_residual(frame))
     if residual > tol:
@@ -167,7 +143,7 @@ def is_orthonormal(frame, tol=TOL):
     >>> is_orthonormal([[1, 1, 0], [0, 1, 0], [0, 0, 1]])   # e2 = (1, 1, 0) is not a unit vector
     False
     """
-    tol = _check_tol(tol)
+    tol = check_tol(tol)
     frame = as_matrices(frame, "frame")
     return _as_bool(_orthonormality_residual(frame) <= tol)
 
@@ -208,7 +184,7 @@ def is_right_handed(frame, tol=TOL):
     >>> is_right_handed(np.diag([1.0, 1.0, -1.0]))   # e1 × e2 = −e3
     False
     """
-    tol = _check_tol(tol)
+    tol = check_tol(tol)
     frame = as_matrices(frame, "frame")
     return _as_bool(_handedness_residual(frame) <= tol)
 
@@ -252,7 +228,7 @@ def check_frame(frame, tol=TOL):
         ...
     ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09); negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
     """
-    tol = _check_tol(tol)
+    tol = check_tol(tol)
     frame = as_matrices(frame, "frame")
     bad = (_orthonormality_residual(frame) > tol) | (_handedness_residual(frame) > tol)
     if np.any(bad):

@@ -25,9 +25,8 @@ from typing import NamedTuple
 import numpy as np
 
 from . import so3
-from ._arrays import as_count
-from .frames import _check_tol, _fmt_vec, _tol_label
-from .tolerance import TOL
+from ._arrays import as_count, fmt_vector
+from .tolerance import TOL, check_tol, tol_label
 
 __all__ = [
     "Failure",
@@ -119,7 +118,7 @@ def _fmt(x):
         arr = np.asarray(x, dtype=np.float64)
     except (TypeError, ValueError):
         return repr(x)
-    text = _fmt_vec(arr)
+    text = fmt_vector(arr)
     return text.replace("\n", "") if arr.ndim >= 2 else text
 
 
@@ -238,7 +237,7 @@ def check_group(
     for fn, fn_name in ((equal, "equal"), (member, "member")):
         if fn is not None and not callable(fn):
             raise TypeError(f"{fn_name} must be callable or None, got {type(fn).__name__} {fn!r}")
-    tol = _check_tol(tol)
+    tol = check_tol(tol)
     max_samples = as_count(max_samples, "max_samples", minimum=1)
     elements = list(elements)
     if not elements:
@@ -321,7 +320,7 @@ def check_group(
                 )
             )
 
-    label = _tol_label(tol)
+    label = tol_label(tol)
     checked = (
         f"{n} sample element{'s' if n != 1 else ''}, {counts['closure']} pairs, "
         f"{counts['associativity']} triples"

@@ -16,9 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import so3
-from ._arrays import as_count, as_float_array, as_vectors, require_finite
-from .frames import _check_tol, _fmt_vec, _tol_label
-from .tolerance import TOL
+from ._arrays import as_count, as_float_array, as_vectors, fmt_vector, require_finite
+from .tolerance import TOL, check_tol, tol_label
 
 __all__ = [
     "Counterexample",
@@ -59,8 +58,8 @@ class Counterexample:
 
     def __repr__(self):
         return (
-            f"Counterexample(p1={_fmt_vec(self.p1)}, p2={_fmt_vec(self.p2)}, "
-            f"lhs={_fmt_vec(self.lhs)}, rhs={_fmt_vec(self.rhs)}, mismatch={self.mismatch:.1e})"
+            f"Counterexample(p1={fmt_vector(self.p1)}, p2={fmt_vector(self.p2)}, "
+            f"lhs={fmt_vector(self.lhs)}, rhs={fmt_vector(self.rhs)}, mismatch={self.mismatch:.1e})"
         )
 
 
@@ -108,8 +107,8 @@ class RigidCheck:
         return (
             f"**✗ not rigid.** {self.message[2:]}\n\n"
             f"| | |\n|---|---|\n"
-            f"| $p_1$ | `{_fmt_vec(c.p1)}` |\n| $p_2$ | `{_fmt_vec(c.p2)}` |\n"
-            f"| left side | `{_fmt_vec(c.lhs)}` |\n| right side | `{_fmt_vec(c.rhs)}` |\n"
+            f"| $p_1$ | `{fmt_vector(c.p1)}` |\n| $p_2$ | `{fmt_vector(c.p2)}` |\n"
+            f"| left side | `{fmt_vector(c.lhs)}` |\n| right side | `{fmt_vector(c.rhs)}` |\n"
             f"| mismatch | {c.mismatch:.1e} |"
         )
 
@@ -259,7 +258,7 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     """
     if not callable(g):
         raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
-    tol = _check_tol(tol)
+    tol = check_tol(tol)
     p1, p2 = _pairs(points, n, seed)
     k = p1.shape[0]
     cross = np.cross(p1, p2)
@@ -272,7 +271,7 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     cross_lhs = np.cross(g1, g2)
     cross_mis = np.linalg.norm(cross_lhs - gc, axis=-1)
 
-    label = _tol_label(tol)
+    label = tol_label(tol)
     plural = "pair" if k == 1 else "pairs"
     len_fail = bool(np.any(len_mis > tol))
     cross_fail = bool(np.any(cross_mis > tol))
@@ -301,13 +300,13 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
         c = Counterexample(p1[w], p2[w], cross_lhs[w], gc[w], float(cross_mis[w]))
         condition = "cross product"
         detail = (
-            f"g(p1)×g(p2) = {_fmt_vec(c.lhs)}, g(p1×p2) = {_fmt_vec(c.rhs)} "
+            f"g(p1)×g(p2) = {fmt_vector(c.lhs)}, g(p1×p2) = {fmt_vector(c.rhs)} "
             f"(‖difference‖ = {c.mismatch:.1e} > {label})"
         )
         also = ""
     message = (
-        f"✗ g fails {_CONDITIONS[condition]}: {detail} for p1 = {_fmt_vec(c.p1)}, "
-        f"p2 = {_fmt_vec(c.p2)}{also}; checked {k} sample {plural}."
+        f"✗ g fails {_CONDITIONS[condition]}: {detail} for p1 = {fmt_vector(c.p1)}, "
+        f"p2 = {fmt_vector(c.p2)}{also}; checked {k} sample {plural}."
     )
     return RigidCheck(ok=False, condition=condition, message=message, counterexample=c, n_pairs=k)
 
@@ -398,7 +397,7 @@ def reflection_map(normal):
         return as_vectors(p, "p") @ M.T
 
     g.__name__ = "reflection_map"
-    g.__doc__ = f"p ↦ (I − 2nnᵀ) p for n = {_fmt_vec(n)}"
+    g.__doc__ = f"p ↦ (I − 2nnᵀ) p for n = {fmt_vector(n)}"
     return g
 
 
@@ -440,5 +439,5 @@ def translation_map(d):
         return as_vectors(p, "p") + d
 
     g.__name__ = "translation_map"
-    g.__doc__ = f"p ↦ p + d for d = {_fmt_vec(d)}"
+    g.__doc__ = f"p ↦ p + d for d = {fmt_vector(d)}"
     return g

@@ -32,7 +32,7 @@ from ._arrays import (
     as_square_matrices,
     as_vectors,
 )
-from .tolerance import TOL
+from .tolerance import TOL, check_tol, tol_label
 
 __all__ = [
     "hat",
@@ -134,11 +134,12 @@ def vee(W, tol=TOL):
     array([1., 2., 3.])
     """
     W = as_matrices(W, "W")
+    tol = check_tol(tol)
     sym = np.linalg.norm(W + np.swapaxes(W, -1, -2), axis=(-2, -1))
     if not np.all(sym <= tol):
         worst = np.unravel_index(np.argmax(sym), sym.shape) if sym.ndim else ()
         raise ValueError(
-            f"W is not skew-symmetric: ‖W + Wᵀ‖ = {float(sym[worst]):.1e} > tol = {tol:.0e}"
+            f"W is not skew-symmetric: ‖W + Wᵀ‖ = {float(sym[worst]):.1e} > {tol_label(tol)}"
             + (f" (at batch index {tuple(int(i) for i in worst)})" if worst else "")
             + "; vee expects a matrix of so(3), Wᵀ = −W, such as hat(w)"
         )
@@ -255,7 +256,7 @@ def exp(w, theta=None):
         worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
         raise ValueError(
             f"with theta given, w must be a unit axis: ‖w‖ = {float(norm[worst]):.6g} "
-            f"(|‖w‖ − 1| = {float(off[worst]):.1e} > TOL = {TOL:.0e})"
+            f"(|‖w‖ − 1| = {float(off[worst]):.1e} > {tol_label(TOL)})"
             + (f" at batch index {tuple(int(i) for i in worst)}" if worst else "")
             + "; normalise the axis, w / ‖w‖, or pass the rotation vector w·theta alone"
         )
@@ -293,14 +294,14 @@ def _rotation_error(R, index, tol, name):
         )
     if orth > tol:
         return ValueError(
-            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {orth:.1e} > tol = {tol:.0e}"
+            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {orth:.1e} > {tol_label(tol)}"
             f"{where} (det = {det:.6g}); its columns are not orthonormal. If it is a rotation "
             f"with rounded entries, re-orthonormalise it (e.g. U Vᵀ from its SVD) or pass a "
             f"larger tol"
         )
     return ValueError(
         f"{name} is not a rotation: det({name}) = {det:.6g}, |det − 1| = {abs(det - 1):.1e} > "
-        f"tol = {tol:.0e}{where}; a rotation has det = +1"
+        f"{tol_label(tol)}{where}; a rotation has det = +1"
     )
 
 
@@ -383,6 +384,7 @@ def _log_rows(X, out, want_axis):
 
 def _log_impl(R, tol, name, want_axis):
     R = as_matrices(R, name, finite=False)  # NaN and infinity fail the residual check below
+    tol = check_tol(tol)
     batch = R.shape[:-2]
     flat = R.reshape(-1, 9)
     n = flat.shape[0]
@@ -639,6 +641,7 @@ def is_rotation(R, tol=TOL):
     R = as_float_array(R, "R")
     if R.ndim < 2 or R.shape[-2:] != (3, 3):
         raise ValueError(f"R must have shape (..., 3, 3), got shape {R.shape}")
+    tol = check_tol(tol)
     flat = R.reshape(-1, 9)
     X = np.ascontiguousarray(flat.T)
     with np.errstate(invalid="ignore", over="ignore"):
@@ -669,7 +672,7 @@ def check_rotation(R, tol=TOL, name="R"):
     Raises
     ------
     ValueError
-        Naming what failed and by how much, e.g. ``‖RᵀR − I‖ = 3.2e-02 > tol = 1e-09`` or
+        Naming what failed and by how much, e.g. ``‖RᵀR − I‖ = 3.2e-02 > TOL = 1e-09`` or
         ``det(R) = -1: a reflection, not a rotation``, with the batch index of the first
         failure and a suggestion.
 
@@ -681,6 +684,7 @@ def check_rotation(R, tol=TOL, name="R"):
     ValueError: R is a reflection, not a rotation: det(R) = -1; a rotation has det = +1 (flip the sign of one column to make a right-handed frame)
     """
     R = as_matrices(R, name)
+    tol = check_tol(tol)
     _validate_chunked(R, R.reshape(-1, 9), tol, name)
     return R
 

@@ -17,4 +17,24 @@ reflection, fails by many orders of magnitude. Functions that accept a ``tol`` a
 than changing the policy.
 """
 
+import math
+import numbers
+
 TOL = 1e-9
+
+
+def check_tol(tol):
+    """Return ``tol`` as a float after checking it is a finite real number >= 0."""
+    if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
+        raise TypeError(
+            f"tol must be a real number (default TOL = {TOL:g}), got {type(tol).__name__} {tol!r}"
+        )
+    tol = float(tol)
+    if not math.isfinite(tol) or tol < 0:
+        raise ValueError(f"tol must be a finite number >= 0 (default TOL = {TOL:g}), got {tol!r}")
+    return tol
+
+
+def tol_label(tol):
+    """``'TOL = 1e-09'`` for the package tolerance, ``'tol = ...'`` for an explicit one."""
+    return f"TOL = {tol:g}" if tol == TOL else f"tol = {tol:g}"

@@ -188,7 +188,7 @@ def test_log_refuses_a_reflection():
 
 
 def test_log_refuses_a_non_orthogonal_matrix_naming_the_residual():
-    with pytest.raises(ValueError, match=r"‖RᵀR − I‖ = 3\.0e-02 > tol = 1e-09"):
+    with pytest.raises(ValueError, match=r"‖RᵀR − I‖ = 3\.0e-02 > TOL = 1e-09"):
         so3.log(np.diag([1, 1, 1.015]))  # ‖RᵀR − I‖ = 1.015² − 1
 
 

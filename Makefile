@@ -22,6 +22,11 @@ lab: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest
 
+# Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium);
+# screenshots in build/e2e/.
+e2e: $(STAMP)
+	$(BIN)/python e2e/run_e2e.py
+
 student: $(STAMP)
 	$(BIN)/python -m course_lib.student notebooks build/student --force
 

@@ -24,7 +24,33 @@ TOL = 1e-9
 
 
 def check_tol(tol):
-    """Return ``tol`` as a float after checking it is a finite real number >= 0."""
+    """Return ``tol`` as a float after checking it is a finite real number >= 0.
+
+    Parameters
+    ----------
+    tol : real number
+        A tolerance passed by a caller in place of the default ``TOL``.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    TypeError
+        If ``tol`` is not a real number (a bool, a string, None...).
+    ValueError
+        If ``tol`` is negative, NaN or infinite.
+
+    Examples
+    --------
+    >>> check_tol(1e-6)
+    1e-06
+    >>> check_tol(-1)
+    Traceback (most recent call last):
+    ...
+    ValueError: tol must be a finite number >= 0 (default TOL = 1e-09), got -1.0
+    """
     if isinstance(tol, bool) or not isinstance(tol, numbers.Real):
         raise TypeError(
             f"tol must be a real number (default TOL = {TOL:g}), got {type(tol).__name__} {tol!r}"
@@ -36,5 +62,19 @@ def check_tol(tol):
 
 
 def tol_label(tol):
-    """``'TOL = 1e-09'`` for the package tolerance, ``'tol = ...'`` for an explicit one."""
+    """How error messages name a tolerance: ``TOL = 1e-09`` for the policy's, else ``tol = ...``.
+
+    Parameters
+    ----------
+    tol : float
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> tol_label(TOL), tol_label(1e-6)
+    ('TOL = 1e-09', 'tol = 1e-06')
+    """
     return f"TOL = {tol:g}" if tol == TOL else f"tol = {tol:g}"

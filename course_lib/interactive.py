@@ -23,6 +23,13 @@ notes' :math:`R(\omega, \theta) = e^{\hat\omega\theta}` (eq. 127), computed by
 The widgets redraw a fresh PNG each time a slider is released (``continuous_update=False``),
 so they work in JupyterLab with the default inline backend; in the stored notebooks their
 outputs are marked ``NBVAL_IGNORE_OUTPUT`` because widget model ids are random.
+
+The 3D view of both explorers can be turned: besides the three sliders of the rotation, two
+camera sliders, ``view elev (°)`` and ``view azim (°)``, set matplotlib's viewing angles
+(``Axes3D.view_init``, in degrees; defaults :data:`VIEW_ELEV`, :data:`VIEW_AZIM`, the view of
+:func:`course_lib.plotting.axes3d`). They move the camera only, never the drawn geometry. The
+course does not use the ``ipympl`` backend (mouse-draggable figures), which would store widget
+state instead of static PNGs in the saved notebooks.
 """
 
 import numpy as np
@@ -40,6 +47,10 @@ __all__ = [
     "AZIMUTH_RANGE",
     "THETA_RANGE",
     "Q0",
+    "VIEW_ELEV",
+    "VIEW_AZIM",
+    "VIEW_ELEV_RANGE",
+    "VIEW_AZIM_RANGE",
     "axis_from_spherical",
     "rotated_frame",
     "rodrigues_terms",
@@ -62,7 +73,18 @@ THETA_RANGE = (0.0, 2.0 * np.pi)
 #: The fixed point q0 that the Rodrigues explorer rotates (the tip of the world x axis).
 Q0 = (1.0, 0.0, 0.0)
 
+#: Default camera of the 3D views, in degrees (``view_init``): the view of ``plotting.axes3d``.
+VIEW_ELEV = 20.0
+VIEW_AZIM = -60.0
+
+#: Ranges of the camera sliders, in degrees: elevation from below (−90) to above (90) the xy
+#: plane, azimuth once around the z axis.
+VIEW_ELEV_RANGE = (-90.0, 90.0)
+VIEW_AZIM_RANGE = (-180.0, 180.0)
+
 _SLIDER_STEP = 0.01
+_VIEW_STEP = 1.0
+_EXPLORER_ZOOM = 0.85
 _TERM_COLORS = ("black", "tab:orange", "tab:purple")
 _RESULT_COLOR = "tab:blue"
 _AXIS_COLOR = "0.35"
@@ -399,6 +421,21 @@ def _scalar_angle(x, name):
     return float(a)
 
 
+def _view_angle(x, name):
+    """A camera angle in degrees: a single finite real number (any value, as ``view_init``)."""
+    a = as_angles(x, name)
+    if a.shape != ():
+        raise ValueError(
+            f"{name} must be a single viewing angle in degrees (a number), got shape {a.shape}"
+        )
+    return float(a)
+
+
+def _set_view(ax, elev, azim):
+    """Point the camera of a 3D axes; only the view changes, not what is drawn."""
+    ax.view_init(elev=elev, azim=azim)
+
+
 def _draw_axis_line(ax, w, length=1.4):
     """The rotation axis: a dashed line through the origin and the arrow omega."""
     drawn = []
@@ -407,14 +444,15 @@ def _draw_axis_line(ax, w, length=1.4):
     return drawn
 
 
-def draw_rotated_frame(ax, polar, azimuth, theta):
+def draw_rotated_frame(ax, polar, azimuth, theta, *, elev=VIEW_ELEV, azim=VIEW_AZIM):
     r"""Draw the world frame A, the rotated body frame B and the axis of rotation.
 
     The body frame is :math:`R = e^{\hat\omega\theta}` (eq. 127): its axes are the columns of
     :math:`R`, the world axes carried about :math:`\omega` by :math:`\theta`. Each world axis
     tip travels along a dotted arc :math:`e^{\hat\omega t} e_i`, :math:`t \in [0, \theta]`,
     to the matching body axis tip (no arc is drawn for a world axis that lies on
-    :math:`\omega`: it does not move).
+    :math:`\omega`: it does not move). The camera is set to ``(elev, azim)``; it changes the
+    view only, not the geometry drawn.
 
     Parameters
     ----------
@@ -424,6 +462,12 @@ def draw_rotated_frame(ax, polar, azimuth, theta):
         Spherical angles of the axis :math:`\omega`, see :func:`axis_from_spherical`.
     theta : float
         Rotation angle in radians.
+    elev : float, keyword-only, default VIEW_ELEV = 20
+        Camera elevation in degrees above the xy plane (matplotlib's ``view_init``). Not an
+        angle of the rotation.
+    azim : float, keyword-only, default VIEW_AZIM = -60
+        Camera azimuth in degrees about the z axis. Not the azimuth :math:`\lambda` of
+        :math:`\omega`.
 
     Returns
     -------
@@ -435,7 +479,7 @@ def draw_rotated_frame(ax, polar, azimuth, theta):
     Raises
     ------
     ValueError
-        If an angle is not a single finite number.
+        If an angle (of the rotation or of the camera) is not a single finite number.
     TypeError
         If ``ax`` is not a 3D axes or an angle is not a real number.
 
@@ -447,12 +491,18 @@ def draw_rotated_frame(ax, polar, azimuth, theta):
     >>> drawn = draw_rotated_frame(ax, 0.0, 0.0, np.pi / 2)   # a quarter turn about z
     >>> np.round(drawn.points[0], 12)                        # body x axis = world y axis
     array([0., 1., 0.])
-    >>> plt.close(fig)
+    >>> side = draw_rotated_frame(axes3d("Side")[1], 0.0, 0.0, np.pi / 2, elev=0, azim=-90)
+    >>> side.points.tolist() == drawn.points.tolist()        # another camera, same frame
+    True
+    >>> plt.close("all")
     """
     plotting._require_3d(ax, "draw_rotated_frame")
     polar = _scalar_angle(polar, "polar")
     azimuth = _scalar_angle(azimuth, "azimuth")
     theta = _scalar_angle(theta, "theta")
+    elev = _view_angle(elev, "elev")
+    azim = _view_angle(azim, "azim")
+    _set_view(ax, elev, azim)
     w = axis_from_spherical(polar, azimuth)
     R = so3.exp(w, theta)
     artists = []
@@ -471,14 +521,15 @@ def draw_rotated_frame(ax, polar, azimuth, theta):
     return plotting.Drawn("rotated_frame", artists, body.points, R=R, axis=w, theta=theta, arcs=arcs)
 
 
-def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0):
+def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, azim=VIEW_AZIM):
     r"""Draw Rodrigues' formula assembling :math:`e^{\hat\omega\theta} q_0` tip to tail.
 
     From the origin: :math:`q_0` (black), then from its tip :math:`\sin\theta\,\hat\omega q_0`
     (orange, tangent to the circle of :math:`q_0` about :math:`\omega`), then
     :math:`(1-\cos\theta)\,\hat\omega^2 q_0` (purple, towards the axis). The chain lands on
     :math:`e^{\hat\omega\theta} q_0` (blue arrow from the origin), a point of the dotted circle
-    traced by :math:`q_0` about :math:`\omega` (eq. 125).
+    traced by :math:`q_0` about :math:`\omega` (eq. 125). The camera is set to
+    ``(elev, azim)``; it changes the view only, not the geometry drawn.
 
     Parameters
     ----------
@@ -490,6 +541,12 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0):
         Rotation angle in radians.
     q0 : array_like, shape (3,), default Q0
         The point being rotated.
+    elev : float, keyword-only, default VIEW_ELEV = 20
+        Camera elevation in degrees above the xy plane (matplotlib's ``view_init``). Not an
+        angle of the rotation.
+    azim : float, keyword-only, default VIEW_AZIM = -60
+        Camera azimuth in degrees about the z axis. Not the azimuth :math:`\lambda` of
+        :math:`\omega`.
 
     Returns
     -------
@@ -503,7 +560,8 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0):
     Raises
     ------
     ValueError
-        If an angle is not a single finite number or ``q0`` is not a finite 3-vector.
+        If an angle (of the rotation or of the camera) is not a single finite number or ``q0``
+        is not a finite 3-vector.
     TypeError
         If ``ax`` is not a 3D axes or an input is not numeric.
 
@@ -512,9 +570,11 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0):
     >>> import numpy as np, matplotlib.pyplot as plt
     >>> from course_lib.plotting import axes3d
     >>> fig, ax = axes3d("Rodrigues")
-    >>> drawn = draw_rodrigues_terms(ax, 0.7, 0.4, 2.0)
+    >>> drawn = draw_rodrigues_terms(ax, 0.7, 0.4, 2.0, elev=35, azim=-30)
     >>> np.allclose(drawn.points[-1], drawn.q)               # the chain lands on R q0
     True
+    >>> float(ax.elev), float(ax.azim)                       # the camera asked for
+    (35.0, -30.0)
     >>> plt.close(fig)
     """
     plotting._require_3d(ax, "draw_rodrigues_terms")
@@ -524,6 +584,9 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0):
     q0 = as_vectors(q0, "q0")
     if q0.shape != (3,):
         raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
+    elev = _view_angle(elev, "elev")
+    azim = _view_angle(azim, "azim")
+    _set_view(ax, elev, azim)
     w = axis_from_spherical(polar, azimuth)
     R = so3.exp(w, theta)
     q = R @ q0
@@ -573,29 +636,33 @@ def _show(*objs):
         display(*objs)
 
 
-def _slider(value, bounds, description):
+def _slider(value, bounds, description, unit="radians", step=_SLIDER_STEP, readout=".2f"):
     import ipywidgets
 
     lo, hi = bounds
     value = _scalar_angle(value, description)
     if not lo <= value <= hi:
         raise ValueError(
-            f"{description} = {value:g} is outside the slider range [{lo:.4g}, {hi:.4g}] (radians)"
+            f"{description} = {value:g} is outside the slider range [{lo:.4g}, {hi:.4g}] ({unit})"
         )
     return ipywidgets.FloatSlider(
         value=value,
         min=lo,
         max=hi,
-        step=_SLIDER_STEP,
+        step=step,
         description=description,
         continuous_update=False,
-        readout_format=".2f",
+        readout_format=readout,
         style={"description_width": "8em"},
         layout=ipywidgets.Layout(width="30em"),
     )
 
 
-def _explorer(callback, polar, azimuth, theta):
+def _view_slider(value, bounds, description):
+    return _slider(value, bounds, description, unit="degrees", step=_VIEW_STEP, readout=".0f")
+
+
+def _explorer(callback, polar, azimuth, theta, elev, azim):
     import ipywidgets
 
     return ipywidgets.interactive(
@@ -603,6 +670,9 @@ def _explorer(callback, polar, azimuth, theta):
         polar=_slider(polar, POLAR_RANGE, "axis polar φ"),
         azimuth=_slider(azimuth, AZIMUTH_RANGE, "axis azimuth λ"),
         theta=_slider(theta, THETA_RANGE, "angle θ"),
+        # The camera, in degrees; labelled "view" so it is not taken for the axis angles.
+        elev=_view_slider(elev, VIEW_ELEV_RANGE, "view elev (°)"),
+        azim=_view_slider(azim, VIEW_AZIM_RANGE, "view azim (°)"),
         # _show clears the output itself, only inside IPython (clear_output would print
         # escape codes elsewhere).
         clear_output=False,
@@ -614,10 +684,15 @@ def _explorer_axes(title, w, theta):
     angles = rf"$\omega$ = ({w[0]:.2f}, {w[1]:.2f}, {w[2]:.2f}),  $\theta$ = {theta:.2f} rad"
     fig, ax = plotting.axes3d(title + "\n" + angles)
     fig.subplots_adjust(top=0.86)
+    # The camera sliders can look from below, where the x/y tick labels go to the top of the
+    # cube: drawn a little smaller, the cube keeps its labels clear of the title and inside the
+    # figure at every camera angle the sliders allow.
+    ax.set_box_aspect((1, 1, 1), zoom=_EXPLORER_ZOOM)
     return fig, ax
 
 
-def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3):
+def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, *,
+                      elev=VIEW_ELEV, azim=VIEW_AZIM):
     r"""Sliders for an axis and an angle, redrawing the body frame :math:`e^{\hat\omega\theta}`.
 
     Three sliders (polar angle :math:`\varphi` and azimuth :math:`\lambda` of the unit axis
@@ -627,6 +702,9 @@ def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3):
     .. math:: R_{ab} = e^{\hat\omega\theta}, \qquad
               \omega = (\sin\varphi\cos\lambda, \sin\varphi\sin\lambda, \cos\varphi).
 
+    Two more sliders, ``view elev (°)`` and ``view azim (°)``, turn the camera to look at the
+    frames from another side; they do not change the rotation.
+
     Parameters
     ----------
     polar : float, default π/4
@@ -635,11 +713,15 @@ def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3):
         Initial azimuth, in ``AZIMUTH_RANGE`` = [−π, π].
     theta : float, default π/3
         Initial rotation angle, in ``THETA_RANGE`` = [0, 2π].
+    elev : float, keyword-only, default VIEW_ELEV = 20
+        Initial camera elevation in degrees, in ``VIEW_ELEV_RANGE`` = [−90, 90].
+    azim : float, keyword-only, default VIEW_AZIM = −60
+        Initial camera azimuth in degrees, in ``VIEW_AZIM_RANGE`` = [−180, 180].
 
     Returns
     -------
     ipywidgets.interactive
-        A box with the three sliders and the figure; ``.result`` holds the current rotation
+        A box with the five sliders and the figure; ``.result`` holds the current rotation
         matrix :math:`R`.
 
     Raises
@@ -651,24 +733,25 @@ def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3):
     --------
     >>> import numpy as np
     >>> w = rotation_explorer()
-    >>> [child.description for child in w.children[:3]]
-    ['axis polar φ', 'axis azimuth λ', 'angle θ']
+    >>> [child.description for child in w.children[:5]]
+    ['axis polar φ', 'axis azimuth λ', 'angle θ', 'view elev (°)', 'view azim (°)']
     >>> np.allclose(w.result, rotated_frame(np.pi / 4, np.pi / 4, np.pi / 3))
     True
     """
 
-    def redraw(polar, azimuth, theta):
+    def redraw(polar, azimuth, theta, elev, azim):
         w = axis_from_spherical(polar, azimuth)
         fig, ax = _explorer_axes(r"Body frame B: $R_{ab} = e^{\hat\omega\theta}$", w, theta)
-        drawn = draw_rotated_frame(ax, polar, azimuth, theta)
+        drawn = draw_rotated_frame(ax, polar, azimuth, theta, elev=elev, azim=azim)
         _show(fig)
         plt.close(fig)
         return drawn.R
 
-    return _explorer(redraw, polar, azimuth, theta)
+    return _explorer(redraw, polar, azimuth, theta, elev, azim)
 
 
-def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q0):
+def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q0, *,
+                       elev=VIEW_ELEV, azim=VIEW_AZIM):
     r"""Sliders for an axis and an angle, showing Rodrigues' formula assemble the rotation.
 
     The figure is :func:`draw_rodrigues_terms`: :math:`q_0`, :math:`\sin\theta\,\hat\omega q_0`
@@ -677,7 +760,8 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
 
     .. math:: e^{\hat\omega\theta} = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2
 
-    with numbers (eq. 159).
+    with numbers (eq. 159). Two camera sliders, ``view elev (°)`` and ``view azim (°)``, turn
+    the 3D view without changing the rotation.
 
     Parameters
     ----------
@@ -689,11 +773,15 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
         Initial rotation angle, in [0, 2π].
     q0 : array_like, shape (3,), default Q0
         The point being rotated.
+    elev : float, keyword-only, default VIEW_ELEV = 20
+        Initial camera elevation in degrees, in [−90, 90].
+    azim : float, keyword-only, default VIEW_AZIM = −60
+        Initial camera azimuth in degrees, in [−180, 180].
 
     Returns
     -------
     ipywidgets.interactive
-        The sliders, the figure and the readout; ``.result`` holds the three vectors of
+        The five sliders, the figure and the readout; ``.result`` holds the three vectors of
         :func:`rodrigues_vectors`, shape (3, 3).
 
     Raises
@@ -714,17 +802,17 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
     if q0.shape != (3,):
         raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
 
-    def redraw(polar, azimuth, theta):
+    def redraw(polar, azimuth, theta, elev, azim):
         from IPython.display import Math
 
         w = axis_from_spherical(polar, azimuth)
         fig, ax = _explorer_axes(r"Rodrigues' formula applied to $q_0$", w, theta)
-        drawn = draw_rodrigues_terms(ax, polar, azimuth, theta, q0)
+        drawn = draw_rodrigues_terms(ax, polar, azimuth, theta, q0, elev=elev, azim=azim)
         _show(fig, Math(rodrigues_readout(w, theta)))
         plt.close(fig)
         return drawn.terms
 
-    return _explorer(redraw, polar, azimuth, theta)
+    return _explorer(redraw, polar, azimuth, theta, elev, azim)
 
 
 # --------------------------------------------------------------------------------------------

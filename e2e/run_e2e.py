@@ -17,7 +17,8 @@ NOTEBOOKS_DIR the script
    inside widgets); every markdown cell with LaTeX typeset by MathJax (``mjx-container``, no
    ``mjx-merror``); every image output of the model displayed as a loaded ``<img>``; every
    image inside HTML outputs loaded (the JavaScript animation player); every widget rendered,
-   and in every slider widget, dragging the first slider changes the figure;
+   and in every slider widget, dragging the first slider changes the figure, and so does
+   dragging each camera slider (labelled ``view ...``: the 3D view turns);
 4. saves a full-page screenshot to ``build/e2e/<notebook>.png``.
 
 The server, its kernels and the browser are stopped in ``finally`` blocks, also when a check
@@ -339,10 +340,21 @@ JS_TAG_WIDGETS = """() => {
   return boxes.length;
 }"""
 
-JS_WIDGET_FIGURE = """(k) => {
+JS_WIDGET_SLIDERS = """(k) => {
+  // The labels (descriptions) of the sliders of widget k, in order.
+  const box = document.querySelector(`[data-e2e-widget="${k}"]`);
+  return box ? Array.from(box.querySelectorAll('.widget-slider')).map(s => {
+    const label = s.querySelector('.widget-label');
+    return label ? label.innerText.trim() : '';
+  }) : [];
+}"""
+
+JS_WIDGET_FIGURE = """([k, s]) => {
+  // The figure of widget k and the readout of its slider s.
   const box = document.querySelector(`[data-e2e-widget="${k}"]`);
   const img = box && box.querySelector('img');
-  const readout = box && box.querySelector('.widget-readout');
+  const slider = box && box.querySelectorAll('.widget-slider')[s];
+  const readout = slider && slider.querySelector('.widget-readout');
   return {
     src: img ? img.getAttribute('src') : null,
     loaded: !!(img && img.complete && img.naturalWidth > 0),
@@ -469,10 +481,10 @@ def check_overlays(page, problems, when):
         problems.append(f"notification on screen {when}: {text!r}")
 
 
-def drag_slider(page, k):
-    """Drag the first slider of widget k to the other side of its track."""
+def drag_slider(page, k, s=0):
+    """Drag slider ``s`` (default: the first) of widget k to the other side of its track."""
     box = page.locator(f'[data-e2e-widget="{k}"]')
-    slider = box.locator(".widget-slider").first
+    slider = box.locator(".widget-slider").nth(s)
     slider.scroll_into_view_if_needed()
     track = slider.locator(".noUi-target, .slider").first.bounding_box()
     handle = slider.locator(".noUi-handle").first.bounding_box()
@@ -496,31 +508,47 @@ def check_sliders(page, state, problems, timeout):
     if expected and n == 0:
         problems.append(f"{expected} widget output(s) in the model but no slider on the page")
     for k in range(n):
-        before = page.evaluate(JS_WIDGET_FIGURE, k)
-        if not before["loaded"]:
-            problems.append(f"slider widget {k}: no figure displayed before moving the slider")
-            continue
-        drag_slider(page, k)
-
-        def changed():
-            now = page.evaluate(JS_WIDGET_FIGURE, k)
-            kernel = page.evaluate(JS_STATE)["kernel"]
-            ok = now["loaded"] and now["src"] != before["src"] and kernel == "idle"
-            return now if ok else None
-
-        try:
-            after = poll(changed, timeout, f"the figure of slider widget {k} to change")
-        except CheckFailed as exc:
-            now = page.evaluate(JS_WIDGET_FIGURE, k)
-            problems.append(f"slider widget {k}: {exc} (readout {before['readout']} -> "
-                            f"{now['readout']})")
-            continue
-        if after["readout"] == before["readout"]:
-            problems.append(f"slider widget {k}: the slider readout did not change")
-        if after["stderr"]:
-            problems.append(f"slider widget {k}: error output after moving the slider")
-        log(f"  slider widget {k}: readout {before['readout']} -> {after['readout']}, figure redrawn")
+        labels = page.evaluate(JS_WIDGET_SLIDERS, k)
+        # The first slider (a parameter of the figure) and every camera slider ("view elev",
+        # "view azim": they turn the 3D view); each of them must redraw the figure.
+        to_drag = [0] + [s for s, label in enumerate(labels) if s > 0 and label.startswith("view ")]
+        for s in to_drag:
+            if not drag_and_check(page, k, s, labels[s] if s < len(labels) else "?", problems,
+                                  timeout):
+                break
     return n
+
+
+def drag_and_check(page, k, s, label, problems, timeout):
+    """Drag slider ``s`` of widget k; check the figure is redrawn. False if it is not."""
+    name = f"slider widget {k}, slider {s} ({label!r})"
+    before = page.evaluate(JS_WIDGET_FIGURE, [k, s])
+    if not before["loaded"]:
+        problems.append(f"{name}: no figure displayed before moving the slider")
+        return False
+    drag_slider(page, k, s)
+
+    def changed():
+        now = page.evaluate(JS_WIDGET_FIGURE, [k, s])
+        kernel = page.evaluate(JS_STATE)["kernel"]
+        ok = now["loaded"] and now["src"] != before["src"] and kernel == "idle"
+        return now if ok else None
+
+    try:
+        after = poll(changed, timeout, f"the figure of {name} to change")
+    except CheckFailed as exc:
+        now = page.evaluate(JS_WIDGET_FIGURE, [k, s])
+        problems.append(f"{name}: {exc} (readout {before['readout']} -> {now['readout']})")
+        return False
+    ok = True
+    if after["readout"] == before["readout"]:
+        problems.append(f"{name}: the slider readout did not change")
+        ok = False
+    if after["stderr"]:
+        problems.append(f"{name}: error output after moving the slider")
+        ok = False
+    log(f"  {name}: readout {before['readout']} -> {after['readout']}, figure redrawn")
+    return ok
 
 
 JS_SCROLLER = """(top) => {

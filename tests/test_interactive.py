@@ -4,6 +4,8 @@ Everything runs on the Agg backend and closes its figures. The widgets are exerc
 browser: moving a slider is setting its value, and what would be displayed is intercepted.
 """
 
+import inspect
+import io
 import re
 
 import matplotlib
@@ -23,6 +25,10 @@ from course_lib.interactive import (  # noqa: E402
     POLAR_RANGE,
     Q0,
     THETA_RANGE,
+    VIEW_AZIM,
+    VIEW_AZIM_RANGE,
+    VIEW_ELEV,
+    VIEW_ELEV_RANGE,
     axis_from_spherical,
     draw_rodrigues_terms,
     draw_rotated_frame,
@@ -380,8 +386,107 @@ def test_draw_rodrigues_terms_refuses_bad_q0():
 
 
 # --------------------------------------------------------------------------------------------
+# The camera of the drawings: elev/azim move the view, never the geometry
+# --------------------------------------------------------------------------------------------
+
+DRAWINGS = [draw_rotated_frame, draw_rodrigues_terms]
+VIEWS = [(VIEW_ELEV, VIEW_AZIM), (0.0, -90.0), (90.0, 0.0), (-90.0, 180.0), (35.5, 12.25), (-30.0, -180.0)]
+
+
+def geometry(ax):
+    """Everything drawn on ``ax``, in world coordinates: its arrows and its lines."""
+    return arrows_on(ax), lines_on(ax)
+
+
+def same_geometry(a, b):
+    (arrows_a, lines_a), (arrows_b, lines_b) = a, b
+    return (
+        arrows_a.shape == arrows_b.shape
+        and np.linalg.norm(arrows_a - arrows_b) <= TOL
+        and len(lines_a) == len(lines_b)
+        and all(x.shape == y.shape and np.linalg.norm(x - y) <= TOL for x, y in zip(lines_a, lines_b))
+    )
+
+
+def test_same_geometry_sees_a_different_rotation():
+    """The check used below is not vacuous: another angle gives another drawing."""
+    fig, ax = plotting.axes3d("a")
+    draw_rotated_frame(ax, 0.4, 0.3, 1.0)
+    fig2, ax2 = plotting.axes3d("b")
+    draw_rotated_frame(ax2, 0.4, 0.3, 1.0 + 1e-6)
+    assert same_geometry(geometry(ax), geometry(ax))
+    assert not same_geometry(geometry(ax), geometry(ax2))
+    plt.close(fig)
+    plt.close(fig2)
+
+
+def test_view_defaults_are_the_fixed_view_of_axes3d():
+    params = inspect.signature(plotting.axes3d).parameters
+    assert (VIEW_ELEV, VIEW_AZIM) == (params["elev"].default, params["azim"].default) == (20.0, -60.0)
+    for draw in DRAWINGS:
+        params = inspect.signature(draw).parameters
+        assert params["elev"].default == VIEW_ELEV and params["azim"].default == VIEW_AZIM
+        # keyword-only: a fifth positional number cannot be taken for a camera angle
+        assert params["elev"].kind is inspect.Parameter.KEYWORD_ONLY
+        assert params["azim"].kind is inspect.Parameter.KEYWORD_ONLY
+
+
+@pytest.mark.parametrize("draw", DRAWINGS)
+def test_drawing_without_a_view_uses_the_default_camera(draw):
+    fig, ax = plotting.axes3d("t", elev=60.0, azim=10.0)  # another camera before drawing
+    draw(ax, 0.4, -1.0, 2.0)
+    assert (ax.elev, ax.azim, ax.roll) == (VIEW_ELEV, VIEW_AZIM, 0.0)
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("draw", DRAWINGS)
+@pytest.mark.parametrize("elev, azim", VIEWS)
+@pytest.mark.parametrize("polar, azimuth, theta", ANGLES[1:3])
+def test_drawing_view_is_the_camera_asked_for_and_leaves_the_geometry_alone(draw, elev, azim, polar,
+                                                                             azimuth, theta):
+    fig, ax = plotting.axes3d("default view")
+    reference = draw(ax, polar, azimuth, theta)
+    fig2, ax2 = plotting.axes3d("turned")
+    drawn = draw(ax2, polar, azimuth, theta, elev=elev, azim=azim)
+    assert (ax2.elev, ax2.azim, ax2.roll) == (elev, azim, 0.0)
+    assert same_geometry(geometry(ax2), geometry(ax))
+    assert np.linalg.norm(drawn.points - reference.points) <= TOL
+    assert np.linalg.norm(drawn.R - rotated_frame(polar, azimuth, theta)) <= TOL
+    # the limits (the equal-aspect cube) do not move with the camera either
+    assert [ax2.get_xlim(), ax2.get_ylim(), ax2.get_zlim()] == [ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]
+    plt.close(fig)
+    plt.close(fig2)
+
+
+@pytest.mark.parametrize("draw", DRAWINGS)
+def test_drawing_refuses_a_bad_camera_before_drawing_anything(draw):
+    fig, ax = plotting.axes3d("t")
+    before = len(ax.get_children())
+    with pytest.raises(ValueError, match="elev contains NaN or infinity"):
+        draw(ax, 0.1, 0.2, 0.3, elev=np.nan)
+    with pytest.raises(ValueError, match="azim contains NaN or infinity"):
+        draw(ax, 0.1, 0.2, 0.3, azim=np.inf)
+    with pytest.raises(ValueError, match=r"azim must be a single viewing angle in degrees .* shape \(2,\)"):
+        draw(ax, 0.1, 0.2, 0.3, azim=[10.0, 20.0])
+    with pytest.raises(TypeError, match="elev must be an array of real numbers"):
+        draw(ax, 0.1, 0.2, 0.3, elev="top")
+    assert len(ax.get_children()) == before  # nothing drawn ...
+    assert (ax.elev, ax.azim) == (VIEW_ELEV, VIEW_AZIM)  # ... and the camera not moved
+    plt.close(fig)
+
+
+# --------------------------------------------------------------------------------------------
 # The widgets
 # --------------------------------------------------------------------------------------------
+
+
+class Shown(list):
+    """The display calls of a widget (``"clear"`` or the type names shown), and in ``figures``
+    the figures themselves, in order."""
+
+    def __init__(self):
+        super().__init__()
+        self.figures = []
 
 
 @pytest.fixture
@@ -389,7 +494,7 @@ def shown(monkeypatch):
     """Pretend to be in IPython and record what the widgets would display."""
     import IPython.display
 
-    calls = []
+    calls = Shown()
     monkeypatch.setattr(interactive, "_in_ipython", lambda: True)
     monkeypatch.setattr(IPython.display, "clear_output", lambda wait=False: calls.append("clear"))
 
@@ -399,6 +504,7 @@ def shown(monkeypatch):
         for obj in objs:
             if isinstance(obj, matplotlib.figure.Figure):
                 assert obj.axes and obj.axes[0].get_title()
+                calls.figures.append(obj)
 
     monkeypatch.setattr(IPython.display, "display", fake_display)
     return calls
@@ -410,18 +516,63 @@ def sliders_of(widget):
     return {s.description: s for s in widget.children if isinstance(s, ipywidgets.FloatSlider)}
 
 
+ROTATION_SLIDERS = ["axis polar φ", "axis azimuth λ", "angle θ"]
+VIEW_SLIDERS = ["view elev (°)", "view azim (°)"]
+
+
 @pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
-def test_explorer_has_three_release_only_sliders_with_the_documented_ranges(make):
+def test_explorer_has_five_release_only_sliders_with_the_documented_ranges(make):
     import ipywidgets
 
     widget = make()
     assert isinstance(widget, ipywidgets.interactive)
     sliders = sliders_of(widget)
-    assert list(sliders) == ["axis polar φ", "axis azimuth λ", "angle θ"]
-    for slider, (lo, hi) in zip(sliders.values(), (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)):
+    # three for the rotation (radians), then two for the camera (degrees), labelled "view"
+    assert list(sliders) == ROTATION_SLIDERS + VIEW_SLIDERS
+    ranges = (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE, VIEW_ELEV_RANGE, VIEW_AZIM_RANGE)
+    assert VIEW_ELEV_RANGE == (-90.0, 90.0) and VIEW_AZIM_RANGE == (-180.0, 180.0)
+    for slider, (lo, hi) in zip(sliders.values(), ranges):
         assert (slider.min, slider.max) == (lo, hi)
         assert slider.continuous_update is False  # one redraw per release, not per pixel
+    assert [sliders[d].step for d in VIEW_SLIDERS] == [1.0, 1.0]  # whole degrees
+    assert [sliders[d].readout_format for d in VIEW_SLIDERS] == [".0f", ".0f"]
+    # the camera starts at the fixed view the figures had before it could be turned
+    assert (sliders["view elev (°)"].value, sliders["view azim (°)"].value) == (VIEW_ELEV, VIEW_AZIM)
     assert isinstance(widget.children[-1], ipywidgets.Output)
+
+
+@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
+def test_explorer_takes_an_initial_camera(make):
+    sliders = sliders_of(make(elev=-45.0, azim=150.0))
+    assert (sliders["view elev (°)"].value, sliders["view azim (°)"].value) == (-45.0, 150.0)
+
+
+def rendered(fig):
+    """The PNG bytes of a figure (closed figures still render)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    return buf.getvalue()
+
+
+@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
+def test_moving_a_view_slider_turns_the_camera_but_not_the_geometry(make, shown):
+    widget = make(polar=1.1, azimuth=-0.4, theta=2.0)
+    result = np.array(widget.result)
+    sliders = sliders_of(widget)
+    sliders["view azim (°)"].value = 30.0
+    sliders["view elev (°)"].value = -45.0
+    assert len(shown.figures) == 3  # the first figure, then one redraw per slider moved
+    first, turned, tilted = shown.figures
+    cameras = [(f.axes[0].elev, f.axes[0].azim) for f in shown.figures]
+    assert cameras == [(VIEW_ELEV, VIEW_AZIM), (VIEW_ELEV, 30.0), (-45.0, 30.0)]
+    # the drawn geometry, the titles (axis and angle) and the result stay as they were
+    for fig in (turned, tilted):
+        assert same_geometry(geometry(fig.axes[0]), geometry(first.axes[0]))
+        assert fig.axes[0].get_title() == first.axes[0].get_title()
+    assert np.linalg.norm(widget.result - result) <= TOL
+    # ... while the picture does change (what the browser test sees when a slider is dragged)
+    pngs = [rendered(f) for f in shown.figures]
+    assert pngs[0] != pngs[1] and pngs[1] != pngs[2]
 
 
 def test_rotation_explorer_redraws_when_a_slider_moves():
@@ -451,6 +602,25 @@ def test_explorer_displays_exactly_one_figure_per_redraw_and_leaves_none_open(sh
     assert plt.get_fignums() == []
 
 
+@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
+@pytest.mark.parametrize("elev, azim", [(VIEW_ELEV, VIEW_AZIM), (-45.0, 120.0), (-30.0, -60.0),
+                                        (-90.0, 0.0), (45.0, -150.0), (90.0, 90.0)])
+def test_explorer_labels_stay_clear_of_the_title_at_any_camera(make, elev, azim, shown):
+    # Seen from below, the x/y tick labels move to the top of the cube, towards the title.
+    make(polar=2.5, azimuth=0.8, theta=1.0, elev=elev, azim=azim)
+    (fig,) = shown.figures
+    ax = fig.axes[0]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    title = ax.title.get_window_extent(renderer)
+    labels = [t.get_window_extent(renderer) for axis in (ax.xaxis, ax.yaxis, ax.zaxis)
+              for t in axis.get_ticklabels() + [axis.label] if t.get_visible() and t.get_text()]
+    assert labels
+    for box in labels:
+        assert not box.overlaps(title)
+        assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
+
+
 def test_rodrigues_explorer_displays_the_figure_and_the_matrix_readout(shown):
     rodrigues_explorer()
     assert shown == ["clear", ["Figure", "Math"]]
@@ -472,6 +642,13 @@ def test_explorer_refuses_initial_values_outside_the_sliders(make):
         make(polar=-0.1)
     with pytest.raises(ValueError, match="contains NaN"):
         make(azimuth=np.nan)
+    out_of_range = r"view elev \(°\) = 100 is outside the slider range \[-90, 90\] \(degrees\)"
+    with pytest.raises(ValueError, match=out_of_range):
+        make(elev=100.0)
+    with pytest.raises(ValueError, match=r"view azim \(°\) = -200 is outside .* \[-180, 180\]"):
+        make(azim=-200.0)
+    with pytest.raises(ValueError, match=r"view azim \(°\) contains NaN"):
+        make(azim=np.nan)
 
 
 def test_rodrigues_explorer_refuses_bad_q0():

@@ -6,9 +6,10 @@ A frame is stored as a 3x3 matrix whose COLUMNS are its basis vectors,
 
 batched over leading axes as ``(..., 3, 3)``. The course always works with orthonormal
 (eqs. 1-2), right-handed (:math:`e_1 \times e_2 = e_3`) frames. In such a frame a point has
-coordinates obtained by projection (eqs. 3-5), the body axes seen in the world frame stack into
-the rotation matrix :math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26), and the same matrix
-changes coordinates, :math:`v_a = R_{ab} v_b` (eq. 64).
+coordinates obtained by projecting its position relative to the frame's origin (eqs. 3-5), the
+body axes seen in the world frame stack into the rotation matrix
+:math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26), and the same matrix changes coordinates,
+:math:`v_a = R_{ab} v_b` (eq. 64).
 
 Every check compares a residual norm with the one tolerance of the package,
 :data:`course_lib.tolerance.TOL`.
@@ -283,13 +284,19 @@ def frame_from_vectors(e1, e2, e3):
     return np.stack(vectors, axis=-1)
 
 
-def coordinates(p, frame):
+def coordinates(p, frame, origin=(0, 0, 0)):
     r"""Coordinates of the point ``p`` in an orthonormal right-handed frame, by projection.
 
-    Each coordinate is the projection of :math:`p` onto one basis vector (eqs. 3-5):
+    Each coordinate is the projection, onto one basis vector, of the vector from the frame's
+    origin :math:`o` to the point (eqs. 3-5):
 
-    .. math:: p_x = p \cdot e_1, \quad p_y = p \cdot e_2, \quad p_z = p \cdot e_3,
-              \qquad\text{i.e.}\quad \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} p.
+    .. math:: p_x = (p - o) \cdot e_1, \quad p_y = (p - o) \cdot e_2, \quad p_z = (p - o) \cdot e_3,
+              \qquad\text{i.e.}\quad \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} (p - o),
+
+    so that :math:`p = o + p_x e_1 + p_y e_2 + p_z e_3`. The notes' eqs. 3-5 project
+    :math:`p` itself, which is the case :math:`o = 0` (the default): right only when the frame's
+    origin is the point the positions are measured from. A point cannot be dotted with a basis
+    vector, only the free vector :math:`p - o` can.
 
     Parameters
     ----------
@@ -297,11 +304,14 @@ def coordinates(p, frame):
         The point, written in the coordinates in which the basis vectors are given.
     frame : array_like, shape (..., 3, 3)
         Basis vectors as columns; checked with :func:`check_frame`. Batches broadcast with ``p``.
+    origin : array_like, shape (..., 3), default (0, 0, 0)
+        The frame's origin, written in the same coordinates as ``p``. Batches broadcast with
+        ``p`` and ``frame``.
 
     Returns
     -------
     ndarray, shape (..., 3)
-        ``(p · e1, p · e2, p · e3)``.
+        ``((p − o) · e1, (p − o) · e2, (p − o) · e3)``.
 
     Raises
     ------
@@ -317,14 +327,32 @@ def coordinates(p, frame):
     >>> frame = frame_from_vectors([s, s, 0], [-s, s, 0], [0, 0, 1])   # 45° about z
     >>> np.round(coordinates([1, 1, 3], frame), 6) + 0.0
     array([1.414214, 0.      , 3.      ])
+
+    The same frame with its origin at :math:`o = (1, 1, 1)`: the point :math:`o + 2 e_1 + e_3`
+    has coordinates (2, 0, 1), which projecting the point itself does not give.
+
+    >>> o = np.array([1.0, 1.0, 1.0])
+    >>> p = o + 2 * frame[:, 0] + frame[:, 2]
+    >>> np.round(coordinates(p, frame, origin=o), 6) + 0.0
+    array([2., 0., 1.])
+    >>> np.round(coordinates(p, frame), 6) + 0.0
+    array([3.414214, 0.      , 2.      ])
     """
     p = as_vectors(p, "p")
+    o = as_vectors(origin, "origin")
     frame = check_frame(frame)
     try:
-        return (np.swapaxes(frame, -1, -2) @ p[..., None])[..., 0]
+        rel = p - o
     except ValueError:
         raise ValueError(
-            f"p and frame batches do not broadcast: p has shape {p.shape}, frame has shape {frame.shape}"
+            f"p and origin batches do not broadcast: p has shape {p.shape}, origin has shape {o.shape}"
+        ) from None
+    try:
+        return (np.swapaxes(frame, -1, -2) @ rel[..., None])[..., 0]
+    except ValueError:
+        raise ValueError(
+            f"p and frame batches do not broadcast: p − origin has shape {rel.shape}, "
+            f"frame has shape {frame.shape}"
         ) from None
 
 

@@ -29,6 +29,12 @@ Conventions
 * Figures are created by :func:`axes3d`, :func:`axes2d`, :func:`axes_row` or
   :func:`plot_convergence`; each sets a title and axis labels, a fixed size, dpi and font, and
   equal, fixed axis limits, so the same cell always gives the same picture. Nothing is random.
+* Figures lay themselves out, so a notebook needs no ``fig.tight_layout()`` and can show the
+  full canvas (``bbox_inches=None``): 2D figures use matplotlib's constrained layout, which
+  makes room for long tick labels, tall axis labels, a legend or a colour bar when the figure is
+  drawn. 3D figures get fixed margins instead (constrained layout does not measure the axis
+  labels of 3D axes); those of :func:`axes_row` leave room for the tick labels at any camera
+  elevation.
 * ``draw_*`` functions work on 3D axes with 3-vectors and (where it makes sense) on 2D axes
   with 2-vectors. They return a :class:`Drawn`: the list of artists they added (iterate over it)
   and, in ``.points``, the geometry they drew in world coordinates, so that a notebook can
@@ -85,6 +91,16 @@ PANEL_SIZE = 4.2
 FONT_SIZE = 11
 TITLE_SIZE = 12
 ARROW_HEAD = 12  # arrow head size in points (FancyArrowPatch mutation_scale)
+
+# Margins (fractions of the figure) around the 3D panels of axes_row. The bottom margin leaves
+# room for the x/y tick labels under the cube at every camera elevation: seen from about 30° to
+# 60° above, the front corner of the cube and its tick labels reach lowest on the canvas. The
+# top margin leaves room for the title, which sits above the (square) panel.
+_ROW_MARGINS_3D = {"left": 0.02, "right": 0.95, "bottom": 0.1, "top": 0.92, "wspace": 0.1}
+
+# Layout engine of the 2D figures made here: constrained layout sizes the margins to the tick
+# labels, axis labels, legend and colour bar when the figure is drawn.
+_LAYOUT_2D = "constrained"
 
 _LINESTYLES = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
 
@@ -382,7 +398,10 @@ def axes3d(title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$",
 def axes2d(title, ax=None, lim=1.5, labels=("$x$", "$y$"), figsize=FIGSIZE):
     r"""Create (or set up) a 2D axes with equal aspect, labelled axes and a title.
 
-    Used for planar figures such as the pendulum of eq. (117)-(118).
+    Used for planar figures such as the pendulum of eq. (117)-(118). A new figure uses
+    constrained layout: when it is drawn, its margins grow to fit the tick labels, the axis labels
+    and the title (and a legend or colour bar added later), so nothing is cut off on the full
+    canvas and no ``fig.tight_layout()`` is needed. An existing ``ax`` keeps its figure's layout.
 
     Parameters
     ----------
@@ -420,7 +439,7 @@ def axes2d(title, ax=None, lim=1.5, labels=("$x$", "$y$"), figsize=FIGSIZE):
     if ax is None:
         _text_arg(title, "title")
         _limits(lim)
-        fig, ax = plt.subplots(figsize=figsize, dpi=DPI)
+        fig, ax = plt.subplots(figsize=figsize, dpi=DPI, layout=_LAYOUT_2D)
     else:
         if _dim(ax) != 2:
             raise TypeError("axes2d needs a 2D axes; got a 3D axes (use axes3d)")
@@ -434,6 +453,11 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
 
     For example the phone at time 0 and at time t, or the rotation about z by 90° next to the
     reflection that is not a rigid body transformation.
+
+    3D panels share fixed margins with room below the cubes for the x/y tick labels at any
+    elevation ``elev`` from 0° to 90° (they reach lowest on the canvas for a camera about 30° to
+    60° above) and room above them for the titles; 2D panels use constrained layout, like
+    :func:`axes2d`.
 
     Parameters
     ----------
@@ -480,9 +504,11 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
         raise ValueError(f"kind must be '3d' or '2d', got {kind!r}")
     _limits(lim)
     n = len(titles)
-    fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI)
     if kind == "3d":
-        fig.subplots_adjust(left=0.02, right=0.95, bottom=0.02, top=0.95, wspace=0.1)
+        fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI)
+        fig.subplots_adjust(**_ROW_MARGINS_3D)
+    else:
+        fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI, layout=_LAYOUT_2D)
     axes = [
         fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None)
         for i in range(n)
@@ -694,8 +720,60 @@ def draw_point(ax, p, label=None, color="black", size=30, marker="o"):
     return Drawn("point", artists, P)
 
 
-def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2):
+def _screen_basis(ax, d):
+    """World vectors (right, up) that point right and up on the screen.
+
+    On a 2D axes these are the x and y directions. On a 3D axes they are built from the current
+    view (``ax.elev`` = e, ``ax.azim`` = a): the camera looks at the cube from the direction
+    c = (cos e cos a, cos e sin a, sin e), the screen's right is (−sin a, cos a, 0) and its up
+    is c × right.
+    """
+    if d == 2:
+        return np.array([1.0, 0.0]), np.array([0.0, 1.0])
+    e, a = np.radians(ax.elev), np.radians(ax.azim)
+    camera = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    right = np.array([-np.sin(a), np.cos(a), 0.0])
+    return right, np.cross(camera, right)
+
+
+def _beside(ax, d, direction):
+    """Where to put a label beside a line: (unit offset n in world coordinates, ha, va).
+
+    ``n`` is perpendicular to ``direction`` as seen on the screen (and in space) and points up
+    on the screen as far as possible (right beside a vertical line); the text is anchored on its
+    side facing the line, so it grows away from the line.
+    """
+    right, up = _screen_basis(ax, d)
+    along = np.array([direction @ right, direction @ up])
+    if np.linalg.norm(along) <= TOL:  # the line points at the viewer: go straight up
+        n2 = np.array([0.0, 1.0])
+    else:
+        n2 = np.array([-along[1], along[0]]) / np.linalg.norm(along)
+        if n2[1] < 0 or (n2[1] == 0 and n2[0] < 0):
+            n2 = -n2
+    ha = "left" if n2[0] > 0.4 else ("right" if n2[0] < -0.4 else "center")
+    va = "bottom" if n2[1] > 0.4 else "center"
+    return n2[0] * right + n2[1] * up, ha, va
+
+
+def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2,
+                 label_at=0.65):
     r"""Draw the segment from ``p`` to ``q``, e.g. the distance :math:`\|p_1 - p_2\|` of eq. (9).
+
+    The label is written beside the point at the fraction :math:`t` = ``label_at`` of the way
+    from ``p`` to ``q``, moved off the line by the label gap :math:`\delta` of the axes (5% of
+    the x span) perpendicular to the segment:
+
+    .. math:: \ell = p + t\,(q - p) + \delta\, n, \qquad n \perp (q - p),\ \|n\| = 1,
+
+    where :math:`n` is perpendicular to the segment as seen on the screen (on a 3D axes, for the
+    view at the time of drawing: :math:`n` lies in the plane of the screen) and points up on the
+    screen as far as possible; the text is anchored on its side facing the segment, so it grows
+    away from the line. The default :math:`t = 0.65` keeps the label off the midpoint, where marks
+    placed symmetrically on a body (as on the phone of :func:`draw_box`) have the body's centre
+    and, with ``frame=...``, its frame and the frame's name, and leaves room near the end points
+    for the labels :func:`draw_point` writes there. In a crowded figure choose ``label_at``
+    (0.5 for the midpoint).
 
     Parameters
     ----------
@@ -704,28 +782,37 @@ def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=
     p, q : array_like, shape (d,)
         End points.
     label : str, optional
-        Text written at the midpoint (e.g. ``f"{d:.2f}"``).
+        Text written beside the segment (e.g. ``f"{d:.2f}"``).
     color : colour, default "black"
     style : {"dashed", "solid", "dotted", "dashdot"}
     linewidth : float, default 1.2
+    label_at : float in [0, 1], default 0.65
+        Where along the segment the label goes: 0 at ``p``, 0.5 at the midpoint, 1 at ``q``.
 
     Returns
     -------
     Drawn
-        ``points``: shape (2, d), ``p`` and ``q``; ``length``: :math:`\|p - q\|`.
+        ``points``: shape (2, d), ``p`` and ``q``; ``length``: :math:`\|p - q\|`;
+        ``label_position``: :math:`\ell`, shape (d,), or ``None`` without a label.
 
     Raises
     ------
     ValueError
-        If ``p`` or ``q`` has the wrong shape or non-finite entries, or ``style`` is unknown.
+        If ``p`` or ``q`` has the wrong shape or non-finite entries, ``style`` is unknown, or
+        ``label_at`` is not a number in [0, 1].
+    TypeError
+        If ``label`` is not a string.
 
     Examples
     --------
-    >>> import matplotlib.pyplot as plt
+    >>> import numpy as np, matplotlib.pyplot as plt
     >>> fig, ax = axes3d("Distance")
     >>> seg = draw_segment(ax, [0, 0, 0], [0, 3, 4], label="5")
     >>> float(seg.length)
     5.0
+    >>> gap = seg.label_position - [0, 1.95, 2.6]   # 0.65 of the way from p to q, then across
+    >>> bool(np.isclose(gap @ [0, 3, 4], 0.0))        # the segment, perpendicular to it
+    True
     >>> plt.close(fig)
     """
     d = _dim(ax)
@@ -733,13 +820,20 @@ def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=
     q = _vector(q, "q", d)
     ls = _linestyle(style)
     lw = _scalar(linewidth, "linewidth", positive=True)
+    t = _scalar(label_at, "label_at")
+    if not 0.0 <= t <= 1.0:
+        raise ValueError(
+            f"label_at must be a fraction of the segment in [0, 1] (0 at p, 1 at q), got {t!r}"
+        )
     artists = [_line(ax, [p, q], color, ls, lw)]
+    pos = None
     if label is not None:
-        mid = (p + q) / 2
-        pos = mid + np.full(d, _offset(ax) / np.sqrt(d))
         text = _text_arg(label, "label")
-        artists.append(_text(ax, pos, text, color=color, ha="left", va="bottom"))
-    return Drawn("segment", artists, np.stack([p, q]), length=float(np.linalg.norm(p - q)))
+        n, ha, va = _beside(ax, d, _unit(q - p))
+        pos = p + t * (q - p) + _offset(ax) * n
+        artists.append(_text(ax, pos, text, color=color, ha=ha, va=va))
+    return Drawn("segment", artists, np.stack([p, q]), length=float(np.linalg.norm(p - q)),
+                 label_position=pos)
 
 
 def draw_curve(ax, points, label=None, color="black", style="solid", arrow=False, linewidth=1.8):
@@ -1156,7 +1250,9 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     .. math:: \Big\| \sum_{n=0}^{N-1} \frac{A^n}{n!} - e^{A} \Big\|_F,
 
     but any non-negative errors can be plotted. Exact zeros cannot be shown on a log axis and
-    are left out of the line; a dotted line marks the tolerance ``TOL``.
+    are left out of the line; a dotted line marks the tolerance ``TOL``. A new figure uses
+    constrained layout (see :func:`axes2d`): long tick labels such as :math:`10^{-16}` and a
+    tall y label fit on the canvas without ``fig.tight_layout()``.
 
     Parameters
     ----------
@@ -1213,7 +1309,7 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
         ys[name] = np.where(y > 0, y, np.nan)
     if ax is None:
         _text_arg(title, "title")
-        fig, ax = plt.subplots(figsize=(5.6, 4.0), dpi=DPI)
+        fig, ax = plt.subplots(figsize=(5.6, 4.0), dpi=DPI, layout=_LAYOUT_2D)
     else:
         if _dim(ax) != 2:
             raise TypeError("plot_convergence needs a 2D axes; got a 3D axes")

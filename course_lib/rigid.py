@@ -3,12 +3,14 @@ r"""Is a map :math:`g: \mathbb{R}^3 \to \mathbb{R}^3` a rigid body transformatio
 Definition 1 of the notes asks two things of :math:`g`, for all :math:`p_1, p_2 \in \mathbb{R}^3`:
 
 1. it preserves length, :math:`\|g(p_1) - g(p_2)\| = \|p_1 - p_2\|`;
-2. it preserves orientation, :math:`g(p_1) \times g(p_2) = g(p_1 \times p_2)`.
+2. it preserves relative orientation between vectors,
+   :math:`g(p_1) \times g(p_2) = g(p_1 \times p_2)`.
 
 :func:`check_rigid` tests both on sample pairs and reports the worst counterexample.
 :func:`rotation_map`, :func:`reflection_map` and :func:`translation_map` build the maps the
 notebooks compare: the 90° turn about z (rigid), the mirror that flips z (fails condition 2)
-and a translation (see the note in :func:`check_rigid`).
+and a translation (see the note in :func:`check_rigid`). :func:`vector_map` gives the map
+:math:`g_*(v) = g(v) - g(0)` that a motion induces on free vectors.
 """
 
 from dataclasses import dataclass
@@ -26,11 +28,12 @@ __all__ = [
     "rotation_map",
     "reflection_map",
     "translation_map",
+    "vector_map",
 ]
 
 _CONDITIONS = {
     "length": "condition 1 (length)",
-    "cross product": "condition 2 (cross products)",
+    "cross product": "condition 2 (relative orientation between vectors)",
 }
 
 
@@ -202,7 +205,7 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
         \quad\text{(condition 1, length)}
 
         \| g(p_1) \times g(p_2) - g(p_1 \times p_2) \| \le \mathrm{tol}
-        \quad\text{(condition 2, cross products)}
+        \quad\text{(condition 2, relative orientation between vectors)}
 
     A sample check can *refute* rigidity (one counterexample suffices) but never *prove* it:
     ``ok=True`` only means no sample pair failed. The proof for rotations is Proposition 7.
@@ -211,8 +214,9 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     product to :math:`g(p_1), g(p_2)` themselves. Taken literally, a translation
     :math:`p \mapsto p + d` (:math:`d \ne 0`) preserves lengths but fails condition 2, although
     it is a rigid motion. The usual statement applies condition 2 to vectors
-    :math:`v = p - q`, mapped by :math:`g_*(v) = g(p) - g(q)`; on points it singles out the
-    linear rigid maps, the rotations. This function checks the definition as written.
+    :math:`v = p - q`, mapped by :math:`g_*(v) = g(p) - g(q)` (:func:`vector_map`); on points
+    it singles out the linear rigid maps, the rotations. This function checks the definition as
+    written; ``check_rigid(vector_map(g))`` checks the usual statement.
 
     Parameters
     ----------
@@ -254,7 +258,7 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     >>> result.ok, result.condition
     (False, 'cross product')
     >>> print(result)
-    ✗ g fails condition 2 (cross products): g(p1)×g(p2) = [0., 0., 1.], g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.], p2 = [0., 1., 0.]; checked 6 sample pairs.
+    ✗ g fails condition 2 (relative orientation between vectors): g(p1)×g(p2) = [0., 0., 1.], g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.], p2 = [0., 1., 0.]; checked 6 sample pairs.
     """
     if not callable(g):
         raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
@@ -294,7 +298,7 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
             f"‖g(p1) − g(p2)‖ = {c.lhs:.6g} but ‖p1 − p2‖ = {c.rhs:.6g} "
             f"(mismatch {c.mismatch:.1e} > {label})"
         )
-        also = "; condition 2 (cross products) fails too" if cross_fail else ""
+        also = f"; {_CONDITIONS['cross product']} fails too" if cross_fail else ""
     else:
         w = int(np.argmax(cross_mis))
         c = Counterexample(p1[w], p2[w], cross_lhs[w], gc[w], float(cross_mis[w]))
@@ -357,9 +361,9 @@ def reflection_map(normal):
 
     .. math:: g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
 
-    It preserves lengths (condition 1) but reverses orientation, so it fails condition 2 of
-    Definition 1: with ``normal = (0, 0, 1)`` it is the notes' counterexample,
-    :math:`g(x) \times g(y) = -g(x \times y)`.
+    It preserves lengths (condition 1) but reverses the relative orientation between vectors,
+    so it fails condition 2 of Definition 1: with ``normal = (0, 0, 1)`` it is the notes'
+    counterexample, :math:`g(x) \times g(y) = -g(x \times y)`.
 
     Parameters
     ----------
@@ -407,7 +411,8 @@ def translation_map(d):
     .. math:: g(p) = p + d
 
     It preserves lengths, but for :math:`d \ne 0` it fails condition 2 of Definition 1 as the
-    notes state it (on points): see the note in :func:`check_rigid`.
+    notes state it (on points): see the note in :func:`check_rigid`. On free vectors it acts as
+    the identity, ``vector_map(translation_map(d))(v) == v``.
 
     Parameters
     ----------
@@ -441,3 +446,66 @@ def translation_map(d):
     g.__name__ = "translation_map"
     g.__doc__ = f"p ↦ p + d for d = {fmt_vector(d)}"
     return g
+
+
+def vector_map(g):
+    r"""The map that the motion ``g`` induces on free vectors, :math:`g_*(v) = g(v) - g(0)`.
+
+    A free vector is a difference of points, :math:`v = p - q` (eq. 7). A motion moves the two
+    points, and with them the vector, to :math:`g(p) - g(q)`. For a motion
+    :math:`g(p) = Rp + d` that is
+
+    .. math:: g_*(v) = g(v) - g(0) = R\,v, \qquad g(p) - g(q) = R\,(p - q) = g_*(p - q),
+
+    so :math:`g_*` depends on the vector only, not on the points that represent it (eq. 8), and
+    the translation part drops out: a translation's :math:`g_*` is the identity, a rotation's
+    is the rotation itself. This is how the usual statement of Definition 1 applies condition 2
+    to vectors (see the note in :func:`check_rigid`): ``check_rigid(vector_map(g))``.
+
+    Parameters
+    ----------
+    g : callable
+        A map of points of R³, vectorised ((N, 3) to (N, 3)) or point by point ((3,) to (3,)),
+        as accepted by :func:`check_rigid`.
+
+    Returns
+    -------
+    callable
+        ``g_star(v)`` for ``v`` of shape (..., 3), returning shape (..., 3). It calls ``g`` on
+        the vectors and on the origin each time (``g`` may change between calls).
+
+    Raises
+    ------
+    TypeError
+        If ``g`` is not callable; when ``g_star`` is called, if ``g`` maps neither (N, 3) to
+        (N, 3) nor (3,) to (3,), or ``v`` is not numeric.
+    ValueError
+        When ``g_star`` is called, if ``v`` does not have shape (..., 3) or holds NaN/inf, or
+        ``g`` returns the wrong number of points or NaN/inf.
+
+    Examples
+    --------
+    A translation does not change free vectors, so its vector map passes both conditions of
+    Definition 1, while the translation itself fails condition 2:
+
+    >>> shift = translation_map([1, 0, 0])
+    >>> g_star = vector_map(shift)
+    >>> g_star([0.0, 2.0, 3.0])
+    array([0., 2., 3.])
+    >>> check_rigid(shift).ok, check_rigid(g_star).ok
+    (False, True)
+    """
+    if not callable(g):
+        raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
+
+    def g_star(v):
+        v = as_vectors(v, "v")
+        flat = v.reshape(-1, 3)
+        # g(0) goes first, so g is always probed on at least two points (see _evaluate)
+        image = _evaluate(g, np.concatenate([np.zeros((1, 3)), flat]), TOL)
+        return (image[1:] - image[0]).reshape(v.shape)
+
+    name = getattr(g, "__name__", type(g).__name__)
+    g_star.__name__ = "vector_map"
+    g_star.__doc__ = f"v ↦ g(v) − g(0), the map on free vectors of {name}"
+    return g_star

@@ -160,6 +160,17 @@ def test_coordinates_of_frame_times_c_recover_c(q, c):
 
 
 @settings(deadline=None)
+@given(quaternions, vectors, vectors)
+def test_coordinates_from_a_frame_origin_recover_c(q, c, o):
+    # p = o + c_1 e_1 + c_2 e_2 + c_3 e_3 has coordinates c in the frame with origin o
+    frame, c, o = quaternion_rotation(q), np.array(c), np.array(o)
+    p = o + frame @ c
+    assert np.linalg.norm(coordinates(p, frame, origin=o) - c) <= TOL
+    # ... and they are the projections of the free vector p − o, not of the point p
+    assert np.linalg.norm(coordinates(p, frame, origin=o) - coordinates(p - o, frame)) <= TOL
+
+
+@settings(deadline=None)
 @given(quaternions, vectors)
 def test_change_frame_preserves_length_and_coordinates_undo_it(q, v):
     R = quaternion_rotation(q)
@@ -308,6 +319,47 @@ def test_frame_from_vectors_refuses_bad_vectors():
         frame_from_vectors([1, 0, 0], [0, 1, 0], [0, 0, np.inf])
     with pytest.raises(TypeError, match="e1 must be"):
         frame_from_vectors("x", [0, 1, 0], [0, 0, 1])
+
+
+def test_coordinates_default_origin_is_the_reference_origin():
+    p = np.array([0.3, -1.2, 2.0])
+    frame = so3.rot_z(0.4) @ so3.rot_x(-0.7)
+    assert np.array_equal(coordinates(p, frame), coordinates(p, frame, origin=(0, 0, 0)))
+
+
+def test_coordinates_with_origin_are_the_notes_point_seen_from_frame_b():
+    # notebook 01: a point and a frame B with another origin; projecting the point itself
+    # (eqs. 3-5 read literally) does not rebuild it, projecting p − o_B does
+    o_b = np.array([1.2, 0.3, -0.3])
+    R_b = so3.rot_z(np.pi / 3) @ so3.rot_x(-np.pi / 6)
+    p = np.array([0.9, 0.9, 1.0])
+    p_b = coordinates(p, R_b, origin=o_b)
+    assert np.linalg.norm(o_b + R_b @ p_b - p) <= TOL
+    naive = coordinates(p, R_b)
+    assert np.linalg.norm(o_b + R_b @ naive - p) > 0.1
+
+
+def test_coordinates_with_origin_broadcast_over_batches():
+    frames = so3.random_rotations(4, seed=5)
+    origins = np.random.default_rng(6).standard_normal((4, 3))
+    p = np.array([1.0, 2.0, 3.0])
+    out = coordinates(p, frames, origin=origins)
+    assert out.shape == (4, 3)
+    for k in range(4):
+        assert np.linalg.norm(out[k] - frames[k].T @ (p - origins[k])) <= TOL
+    one_origin = coordinates(np.eye(3), np.eye(3), origin=[1.0, 1.0, 1.0])
+    assert np.array_equal(one_origin, np.eye(3) - 1.0)
+
+
+def test_coordinates_refuses_bad_origins():
+    with pytest.raises(ValueError, match=r"origin must have shape \(\.\.\., 3\)"):
+        coordinates([1, 2, 3], np.eye(3), origin=[0, 0])
+    with pytest.raises(ValueError, match="origin contains NaN"):
+        coordinates([1, 2, 3], np.eye(3), origin=[0, np.inf, 0])
+    with pytest.raises(TypeError, match="origin must be an array of real numbers"):
+        coordinates([1, 2, 3], np.eye(3), origin="o_B")
+    with pytest.raises(ValueError, match="p and origin batches do not broadcast"):
+        coordinates(np.zeros((2, 3)), np.eye(3), origin=np.zeros((3, 3)))
 
 
 def test_coordinates_refuses_bad_points_and_frames():

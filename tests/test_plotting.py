@@ -11,6 +11,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from hypothesis import assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
+from mpl_toolkits.mplot3d import proj3d  # noqa: E402
 from scipy.spatial.transform import Rotation  # noqa: E402
 
 from course_lib import so3  # noqa: E402
@@ -84,6 +85,30 @@ def _render(fig):
     fig.canvas.draw()
 
 
+def _outside_canvas(fig, boxes):
+    """Pixels by which the union of ``boxes`` (display coordinates) sticks out of the canvas.
+
+    The notebooks show the whole canvas (``bbox_inches=None``), so anything outside is cut off.
+    """
+    union = matplotlib.transforms.Bbox.union([b for b in boxes if b is not None])
+    canvas = fig.bbox
+    return max(canvas.x0 - union.x0, canvas.y0 - union.y0, union.x1 - canvas.x1,
+               union.y1 - canvas.y1)
+
+
+def _decorations_2d(fig):
+    """Tight boxes of every 2D axes: ticks, tick labels, axis labels, title, legend."""
+    renderer = fig.canvas.get_renderer()
+    return [ax.get_tightbbox(renderer) for ax in fig.axes]
+
+
+def _axis_labels_3d(fig):
+    """Boxes of the x, y, z axes of every 3D panel: tick labels and axis labels."""
+    renderer = fig.canvas.get_renderer()
+    return [axis.get_tightbbox(renderer) for ax in fig.axes
+            for axis in (ax.xaxis, ax.yaxis, ax.zaxis)]
+
+
 # --- figures and axes -------------------------------------------------------------------------
 
 
@@ -140,6 +165,72 @@ def test_axes_row_makes_one_labelled_panel_per_title():
 def test_axes_refuse_bad_arguments(call, error, match):
     with pytest.raises(error, match=match):
         call()
+
+
+# --- layout: nothing is cut off on the full canvas ---------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "make",
+    [
+        # long negative tick labels and a tall label with units (the pendulum of notebook 03)
+        lambda: axes2d("A pendulum", lim=(-1.6, 1.4), labels=("$x$ (m)", "$y$ (m)")),
+        lambda: axes2d("wide ticks", lim=(-12000.5, -10000.5), labels=("$x$", r"$\dfrac{y}{y_0}$")),
+        lambda: axes_row(["left", "right"], kind="2d", lim=(-1.6, 1.4)),
+        # log ticks 10^{-16} and a y label with hats and subscripts (series plot of notebook 03)
+        lambda: plot_convergence(np.arange(1, 31), np.logspace(1, -16, 30),
+                                 ylabel=r"error $\|S_N - e^{\hat\omega\theta}\|_F$"),
+    ],
+)
+def test_2d_figures_lay_themselves_out_inside_the_canvas(make):
+    fig, _ = make()
+    assert fig.get_layout_engine() is not None  # no fig.tight_layout() needed in a notebook
+    _render(fig)
+    assert _outside_canvas(fig, _decorations_2d(fig)) <= 0
+
+
+def test_2d_layout_makes_room_for_what_is_added_later():
+    # a colour bar (the group table of notebook 02) and a legend added after creation
+    fig, ax = axes2d("Products of the 24 cube rotations", lim=(-0.5, 23.5),
+                     labels=("index of $h$", "index of $g$"))
+    image = ax.imshow(np.arange(24 * 24).reshape(24, 24) % 24, origin="lower")
+    fig.colorbar(image, ax=ax, label="index of $g h$", shrink=0.8)
+    fig2, ax2 = plot_convergence([4, 8, 16], [1e-3, 1e-7, 1e-11], label="RK4")
+    ax2.plot([4, 16], [1e-3, 1e-11], "k--", label="slope $N^{-4}$")
+    ax2.set_xscale("log")
+    ax2.legend()
+    for f in (fig, fig2):
+        _render(f)
+        assert _outside_canvas(f, _decorations_2d(f)) <= 0
+    # the axes stay square and inside the figure next to the colour bar
+    box = ax.get_position()
+    assert 0 <= box.x0 < box.x1 <= 1 and 0 <= box.y0 < box.y1 <= 1
+
+
+def test_given_2d_axes_keep_their_figure_layout():
+    fig, ax0 = plt.subplots()
+    assert fig.get_layout_engine() is None
+    axes2d("given", ax=ax0)
+    plot_convergence([1, 2], [1e-1, 1e-3], ax=ax0)
+    assert fig.get_layout_engine() is None
+
+
+@pytest.mark.parametrize("elev", [20, 30, 45, 60, 75])
+def test_axes_row_keeps_3d_tick_labels_inside_the_canvas_at_any_elevation(elev):
+    # seen from 30°-60° above, the front corner of the cube and its tick labels reach lowest
+    fig, axes = axes_row([r"frame A: $v_a = (0, \sqrt{2}, 3)$", r"Frame B: $R_{ab}$ (eq. 27)"],
+                         lim=(-0.5, 3), elev=elev)
+    _render(fig)
+    renderer = fig.canvas.get_renderer()
+    titles = [ax.title.get_window_extent(renderer) for ax in axes]
+    assert _outside_canvas(fig, _axis_labels_3d(fig) + titles) <= 0  # all sides, default azimuth
+    for azim in range(-180, 180, 40):  # the bottom, from every side
+        for ax in axes:
+            ax.view_init(elev=elev, azim=azim)
+        _render(fig)
+        lowest = min(axis.get_tightbbox(renderer).y0 for ax in axes
+                     for axis in (ax.xaxis, ax.yaxis, ax.zaxis))
+        assert lowest >= fig.bbox.y0, (elev, azim)
 
 
 def test_axes3d_refuses_a_2d_axes_and_axes2d_a_3d_axes():
@@ -343,6 +434,105 @@ def test_draw_segment_joins_the_points_and_reports_the_distance(ax3, p, q):
     assert np.allclose(np.array(line.get_data_3d()).T, [p, q])
     assert np.isclose(seg.length, np.linalg.norm(p - q))
     assert line.get_linestyle() == "--"
+
+
+def _label_of(drawn, d):
+    (text,) = _texts(drawn)
+    return np.array(text.get_position_3d() if d == 3 else text.get_position())
+
+
+@FAST
+@given(p=vec3, q=vec3, t=st.floats(0.0, 1.0), elev=st.floats(-90, 90), azim=st.floats(-180, 180))
+def test_draw_segment_label_sits_across_the_segment_at_the_fraction_label_at(
+    ax3, p, q, t, elev, azim
+):
+    ax3.view_init(elev=elev, azim=azim)
+    try:
+        seg = draw_segment(ax3, p, q, label="d", label_at=t)
+    finally:
+        ax3.view_init(elev=20, azim=-60)
+    pos = _label_of(seg, 3)
+    assert np.allclose(pos, seg.label_position)
+    gap = pos - (p + t * (q - p))
+    lo, hi = ax3.get_xlim()
+    assert np.isclose(np.linalg.norm(gap), 0.05 * (hi - lo))  # the label gap of the axes
+    assert abs(gap @ (q - p)) <= 1e-6 * (1 + np.linalg.norm(q - p))  # across the segment ...
+    e, a = np.radians(elev), np.radians(azim)
+    camera = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    assert abs(gap @ camera) <= 1e-9  # ... in the plane of the screen, so it is seen beside it
+    # and up on the screen (up = camera × right, right = (−sin a, cos a, 0))
+    up = np.cross(camera, [-np.sin(a), np.cos(a), 0.0])
+    assert gap @ up >= -1e-9
+
+
+def test_draw_segment_label_in_2d_is_beside_the_segment_and_above_it():
+    _, ax = axes2d("segment", lim=2.0)
+    for p, q in [([0, 0], [1, 0]), ([1, 0], [0, 0]), ([0, 0], [0, 1]), ([0, 0], [1, -1]),
+                 ([0, 0], [1, 1])]:
+        seg = draw_segment(ax, p, q, label="d")
+        gap = _label_of(seg, 2) - (np.array(p) + 0.65 * (np.subtract(q, p)))
+        assert np.isclose(np.linalg.norm(gap), 0.2)  # 5% of the x span
+        assert np.isclose(gap @ np.subtract(q, p), 0.0)
+        assert gap[1] > 0 or (gap[1] == 0 and gap[0] > 0)  # up (right beside a vertical one)
+    above = _texts(draw_segment(ax, [0, 0], [1, 0], label="d"))[0]
+    assert (above.get_ha(), above.get_va()) == ("center", "bottom")  # grows away from the line
+    right = _texts(draw_segment(ax, [0, 0], [0, 1], label="d"))[0]
+    assert (right.get_ha(), right.get_va()) == ("left", "center")
+
+
+def _screen_box(text, ax, renderer):
+    """Display box of a 3D text where it is drawn (Text3D projects its position only while it
+    draws itself, so its 2D position is moved there for the measurement and put back)."""
+    x0, y0 = text.get_position()
+    xs, ys, _ = proj3d.proj_transform(*text.get_position_3d(), ax.get_proj())
+    text.set_position((xs, ys))
+    try:
+        return text.get_window_extent(renderer)
+    finally:
+        text.set_position((x0, y0))
+
+
+@pytest.mark.parametrize("turned", [False, True])
+def test_draw_segment_label_is_off_the_centre_of_a_box_with_symmetric_marks(turned):
+    # the phone of notebook 02: marks symmetric about the centre, so the midpoint of p1 p2 is
+    # the origin of the body frame B, where its arrows start; the label used to sit there
+    fig, ax = axes3d("phone", lim=0.8)
+    R = so3.rot_z(np.pi / 3) @ so3.rot_x(np.pi / 4) if turned else np.eye(3)
+    marks = [[0.2, 0.4, 0.05], [-0.2, -0.4, 0.05]]
+    phone = draw_box(ax, R, marks=marks, mark_labels=["$p_1$", "$p_2$"], frame="B")
+    assert np.allclose(phone.points.mean(axis=0), R @ [0, 0, 0.05])  # centre, on the top face
+    seg = draw_segment(ax, *phone.points, label="0.894")
+    _render(fig)
+    renderer = fig.canvas.get_renderer()
+    (label,) = _texts(seg)
+    box = _screen_box(label, ax, renderer)
+    centre = ax.transData.transform(proj3d.proj_transform(*R @ [0, 0, 0.05], ax.get_proj())[:2])
+    assert not box.padded(8).contains(*centre)  # clear of the frame's origin ...
+    names = {t.get_text(): _screen_box(t, ax, renderer) for t in _texts(phone)}
+    for name in ("$x_{B}$", "$y_{B}$", "$z_{B}$"):  # ... and of the labels of its axes
+        assert not box.overlaps(names[name]), name
+    # the midpoint is still available on request, across the segment as well
+    mid = draw_segment(ax, *phone.points, label="d", label_at=0.5)
+    assert np.isclose((mid.label_position - phone.points.mean(axis=0)) @
+                      (phone.points[1] - phone.points[0]), 0.0)
+
+
+def test_draw_segment_without_label_and_refusing_bad_label_at():
+    _, ax = axes3d("t")
+    seg = draw_segment(ax, [0, 0, 0], [1, 0, 0])
+    assert seg.label_position is None and _texts(seg) == []
+    for bad in (-0.1, 1.5):
+        with pytest.raises(ValueError, match=r"label_at must be a fraction .* in \[0, 1\]"):
+            draw_segment(ax, [0, 0, 0], [1, 0, 0], label="d", label_at=bad)
+    with pytest.raises(ValueError, match="NaN"):
+        draw_segment(ax, [0, 0, 0], [1, 0, 0], label_at=np.nan)
+    with pytest.raises(TypeError, match="label must be a str"):
+        draw_segment(ax, [0, 0, 0], [1, 0, 0], label=1.0)
+    # a segment that points straight at the viewer still gets its label beside it
+    ax.view_init(elev=90, azim=-60)
+    up = draw_segment(ax, [0, 0, 0], [0, 0, 1], label="d")
+    gap = up.label_position - [0, 0, 0.65]
+    assert np.isclose(np.linalg.norm(gap), 0.15) and np.isclose(gap[2], 0.0)
 
 
 def test_draw_curve_follows_the_trajectory_with_an_arrow_at_the_end():

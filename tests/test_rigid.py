@@ -13,6 +13,7 @@ from course_lib.rigid import (
     reflection_map,
     rotation_map,
     translation_map,
+    vector_map,
 )
 from course_lib.tolerance import TOL
 
@@ -48,7 +49,8 @@ def test_reflection_flips_z_and_fails_condition_2_with_the_notes_counterexample(
     assert np.linalg.norm(c.lhs - c.rhs) == pytest.approx(c.mismatch)
     assert c.mismatch == pytest.approx(2.0)
     assert np.array_equal(c.p1, AXES[0]) and np.array_equal(c.p2, AXES[1])
-    assert "condition 2 (cross products)" in result.message
+    # named as in the notes: "g preserves relative orientation between vectors"
+    assert "condition 2 (relative orientation between vectors)" in result.message
     assert "g(p1)×g(p2) = [0., 0., 1.]" in result.message
     assert "g(p1×p2) = [ 0.,  0., -1.]" in result.message
     assert "2.0e+00 > TOL = 1e-09" in result.message
@@ -89,7 +91,8 @@ def test_scaling_fails_condition_1_with_both_lengths_in_the_message():
     # these two points are collinear with 0, so p1 × p2 = 0 and condition 2 holds for them
     assert "fails too" not in result.message
     both = check_rigid(lambda p: 2 * np.asarray(p), points=[[1, 0, 0], [0, 1, 0]])
-    assert both.condition == "length" and "condition 2 (cross products) fails too" in both.message
+    assert both.condition == "length"
+    assert "condition 2 (relative orientation between vectors) fails too" in both.message
 
 
 def test_counterexample_is_the_worst_pair():
@@ -204,7 +207,7 @@ def test_display_of_a_pass():
 
 def test_display_of_a_failure():
     result = check_rigid(reflection_map([0, 0, 1]), points=AXES)
-    assert str(result).startswith("✗ g fails condition 2 (cross products)")
+    assert str(result).startswith("✗ g fails condition 2 (relative orientation between vectors)")
     md = result._repr_markdown_()
     assert md.startswith("**✗") and "| mismatch | 2.0e+00 |" in md and "$p_1$" in md
     assert repr(result) == "RigidCheck(ok=False, condition='cross product', n_pairs=6, mismatch=2.0e+00)"
@@ -311,3 +314,74 @@ def test_map_builders_refuse_bad_input():
 def test_reflection_normal_is_normalised():
     g = reflection_map([0, 0, 5])
     assert np.array_equal(g([1.0, 2.0, 3.0]), [1.0, 2.0, -3.0])
+
+
+def test_docstrings_name_condition_2_as_the_notes_do():
+    # the notes: "2. g preserves relative orientation between vectors"
+    import course_lib.rigid as rigid
+
+    for doc in (rigid.__doc__, reflection_map.__doc__):
+        text = " ".join(doc.split())
+        assert "relative orientation between vectors" in text
+        assert "preserves orientation" not in text and "reverses orientation" not in text
+
+
+# ------------------------------------------------------------------ vector_map: g_*(v) = g(v) − g(0)
+
+
+@settings(max_examples=30, deadline=None)
+@given(d=rotation_vectors, seed=st.integers(0, 2**32 - 1))
+def test_vector_map_of_a_translation_is_the_identity_and_is_rigid(d, seed):
+    shift = translation_map(d)
+    g_star = vector_map(shift)
+    v = np.random.default_rng(seed).standard_normal((7, 3))
+    assert np.linalg.norm(g_star(v) - v) <= TOL
+    assert np.linalg.norm(g_star(v[0]) - v[0]) <= TOL and g_star(v[0]).shape == (3,)
+    result = check_rigid(g_star)
+    assert result.ok, result.message
+
+
+@settings(max_examples=30, deadline=None)
+@given(r=rotation_vectors, seed=st.integers(0, 2**32 - 1))
+def test_vector_map_of_a_rotation_is_the_rotation_itself(r, seed):
+    g = rotation_map(so3.exp(r))
+    v = np.random.default_rng(seed).standard_normal((5, 3))
+    assert np.linalg.norm(vector_map(g)(v) - g(v)) <= TOL
+    assert check_rigid(vector_map(g)).ok
+
+
+def test_vector_map_of_a_rigid_motion_is_its_rotation_on_any_representative():
+    # g(p) = R p + d: g_*(v) = R v, and g(p) − g(q) = g_*(p − q) for every pair (eq. 8)
+    R, d = so3.exp([0.5, 0.4, 1.2]), np.array([0.1, -0.7, 0.3])
+    motion = lambda P: np.asarray(P) @ R.T + d  # noqa: E731
+    g_star = vector_map(motion)
+    assert np.linalg.norm(g_star(np.eye(3)) - R.T) <= TOL  # rows g_*(e_i) = columns of R
+    p, q = np.random.default_rng(3).standard_normal((2, 10, 3))
+    assert np.linalg.norm(motion(p) - motion(q) - g_star(p - q)) <= TOL
+    assert not check_rigid(motion).ok and check_rigid(g_star).ok
+
+
+def test_vector_map_accepts_per_point_callables_and_batches_of_any_shape():
+    M = so3.rot_x(0.3)
+    per_point = lambda p: M @ np.asarray(p, dtype=float) + 1.0  # noqa: E731 - (3,) -> (3,) only
+    g_star = vector_map(per_point)
+    v = np.random.default_rng(4).standard_normal((2, 4, 3))
+    out = g_star(v)
+    assert out.shape == (2, 4, 3)
+    assert np.linalg.norm(out - v @ M.T) <= TOL
+    assert g_star(np.zeros((0, 3))).shape == (0, 3)
+    assert g_star.__name__ == "vector_map" and "g(v) − g(0)" in g_star.__doc__
+
+
+def test_vector_map_refuses_bad_input():
+    with pytest.raises(TypeError, match="g must be a callable"):
+        vector_map(np.eye(3))
+    g_star = vector_map(translation_map([1, 0, 0]))
+    with pytest.raises(ValueError, match=r"v must have shape \(\.\.\., 3\)"):
+        g_star([1.0, 2.0])
+    with pytest.raises(ValueError, match="v contains NaN"):
+        g_star([1.0, np.nan, 0.0])
+    with pytest.raises(TypeError, match="v must be"):
+        g_star("not a vector")
+    with pytest.raises(TypeError, match="g must map"):
+        vector_map(lambda p: 1.0)([1.0, 0.0, 0.0])

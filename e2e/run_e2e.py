@@ -63,6 +63,10 @@ class CheckFailed(Exception):
     """A check on a notebook failed; the message says which and why."""
 
 
+# A notebook whose first cell has not started this long after "run all" is stalled, not slow.
+NO_START_SECONDS = 40
+
+
 class KernelStalled(CheckFailed):
     """The notebook's kernel never became idle, or never ran the queued cells.
 
@@ -399,10 +403,17 @@ def poll(fn, timeout, what):
 def wait_for_run(page, timeout):
     """Wait until every non-empty code cell ran (or one failed) and the kernel is idle."""
     stable = {"n": 0}
+    start = time.monotonic()
 
     def done():
         state = page.evaluate(JS_STATE)
         code = [c for c in state["cells"] if c["type"] == "code" and c["source"].strip()]
+        started = any(c["count"] is not None or c["state"] == "running" for c in code)
+        if code and not started and time.monotonic() - start > NO_START_SECONDS:
+            raise KernelStalled(
+                f"no cell started within {NO_START_SECONDS} s of 'run all' "
+                f"(kernel status {state['kernel']!r}); the cells stayed queued"
+            )
         errored = any(o["type"] == "error" for c in code for o in c["outputs"])
         finished = all(c["count"] is not None for c in code)
         busy = state["kernel"] != "idle" or any(c["state"] == "running" for c in code)

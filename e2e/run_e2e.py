@@ -783,8 +783,13 @@ def main(argv=None):
                 for nb in notebooks:
                     log(f"{nb}")
                     problems, stalled = check_notebook(context, server, nb.as_posix(), out_dir, args.timeout)
-                    if stalled:
-                        log(f"  kernel stalled ({problems[-1]}); retrying once with a fresh page and kernel")
+                    if problems:
+                        # A browser on a shared machine flakes now and then (most often a kernel
+                        # that never runs the queued cells): one retry, said out loud. A real
+                        # defect fails twice and is reported with the second run's problems.
+                        why = "kernel stalled" if stalled else "failed"
+                        log(f"  {why}: {'; '.join(problems)}")
+                        log("  retrying once with a fresh page and kernel")
                         problems, _ = check_notebook(context, server, nb.as_posix(), out_dir, args.timeout)
                     results[str(nb)] = problems
                     server.note_kernels()

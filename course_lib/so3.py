@@ -305,17 +305,20 @@ def _rotation_error(R, index, tol, name):
     )
 
 
+def _check_chunk(R, X, start, tol, name):
+    """Raise the ValueError of the first matrix of a chunk (entry rows X) not in SO(3)."""
+    orth2, det = _residual_rows(X)
+    ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
+    if not ok.all():
+        bad = start + int(np.argmin(ok))
+        index = np.unravel_index(bad, R.shape[:-2]) if R.ndim > 2 else ()
+        raise _rotation_error(R, tuple(int(i) for i in index), tol, name)
+
+
 def _validate_chunked(R, flat, tol, name):
     """Raise the ValueError of the first matrix that is not in SO(3) within ``tol``."""
-    n = flat.shape[0]
-    for start in range(0, n, _CHUNK):
-        X = np.ascontiguousarray(flat[start : start + _CHUNK].T)
-        orth2, det = _residual_rows(X)
-        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
-        if not ok.all():
-            bad = start + int(np.argmin(ok))
-            index = np.unravel_index(bad, R.shape[:-2]) if R.ndim > 2 else ()
-            raise _rotation_error(R, tuple(int(i) for i in index), tol, name)
+    for start in range(0, flat.shape[0], _CHUNK):
+        _check_chunk(R, np.ascontiguousarray(flat[start : start + _CHUNK].T), start, tol, name)
 
 
 def _log_rows(X, out, want_axis):
@@ -394,12 +397,7 @@ def _log_impl(R, tol, name, want_axis):
     for start in range(0, n, _CHUNK):
         stop = min(start + _CHUNK, n)
         X = np.ascontiguousarray(flat[start:stop].T)
-        orth2, det = _residual_rows(X)
-        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
-        if not ok.all():
-            bad = start + int(np.argmin(ok))
-            index = np.unravel_index(bad, batch) if batch else ()
-            raise _rotation_error(R, tuple(int(i) for i in index), tol, name)
+        _check_chunk(R, X, start, tol, name)  # validation in the same pass, while X is in cache
         b = buf[:, : stop - start]
         angle[start:stop] = _log_rows(X, b, want_axis)
         vec[start:stop] = b.T

@@ -1327,3 +1327,338 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     if any(name is not None for name in ys) or show_tol:
         ax.legend(fontsize=FONT_SIZE - 1)
     return fig, ax
+
+
+# --------------------------------------------------------------------------------------------
+# Chapter 04: composing, interpolating and reading rotations
+# --------------------------------------------------------------------------------------------
+
+__all__ += ["frame_panels", "plot_error_curves", "plot_geodesic", "plot_rodrigues_circle"]
+
+_PANEL_KEYS = ("title", "frames", "vectors", "boxes", "axis")
+
+
+def _axis_line(ax, direction, label=None, origin=None, color="0.45"):
+    """A dashed line through ``origin`` along ±``direction`` (length 1.2), labelled at its tip."""
+    k = _unit(_vector(direction, "axis direction", 3))
+    if np.linalg.norm(k) == 0.0:
+        raise ValueError("axis direction must be non-zero, got the zero vector")
+    o = _origin(origin, 3)
+    artists = [_line(ax, [o - 1.2 * k, o + 1.2 * k], color, "--", 1.2)]
+    if label is not None:
+        artists.append(_text(ax, o + (1.2 + _offset(ax)) * k, _text_arg(label, "label"),
+                             color=color))
+    return Drawn("axis", artists, np.stack([o - 1.2 * k, o + 1.2 * k]))
+
+
+def _frame(ax, name=True, **kwargs):
+    """:func:`draw_frame`; with ``name=False`` the frame's name at its origin is left out.
+
+    The axis labels keep the name as subscript. Two frames with a common origin would
+    otherwise write their names on top of each other.
+    """
+    drawn = draw_frame(ax, **kwargs)
+    if not name and kwargs.get("label", "A"):
+        drawn.artists.pop().remove()  # draw_frame writes the name last
+    return drawn
+
+
+def _panel_items(panel, key):
+    items = panel.get(key, ())
+    if isinstance(items, dict):
+        items = [items]
+    for item in items:
+        if not isinstance(item, dict):
+            raise TypeError(f"panel[{key!r}] must hold dicts of keyword arguments, "
+                            f"got {type(item).__name__}")
+    return items
+
+
+def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
+    r"""Side-by-side 3D panels of frames, vectors, boxes and rotation axes.
+
+    Made for the comparisons of chapter 04: rotating about a fixed axis versus a body axis
+    (:math:`R\,R_{ab}` versus :math:`R_{ab}R`), :math:`R_x(\alpha)R_z(\beta)` versus
+    :math:`R_z(\beta)R_x(\alpha)`, a chain of frames, the active and passive readings of
+    :math:`R_{ab}` and the frames of a pan-tilt camera. Every frame is drawn by
+    :func:`draw_frame`, so its arrows end at :math:`o + s\,R e_i`.
+
+    Parameters
+    ----------
+    panels : sequence of dict
+        One dict per panel, with the keys
+
+        * ``"title"`` (str, required);
+        * ``"frames"``: dicts of keyword arguments of :func:`draw_frame` (``R``, ``label``,
+          ``origin``, ``style``, ``scale``), plus ``"name": False`` to leave out the frame's
+          name at its origin (the axis labels still carry it as subscript);
+        * ``"vectors"``: dicts of keyword arguments of :func:`draw_vector` (``v``, ``origin``,
+          ``label``, ``color``, ``style``);
+        * ``"boxes"``: dicts of keyword arguments of :func:`draw_box`;
+        * ``"axis"``: a dict ``{"direction": (3,), "label": str, "origin": (3,)}``, a dashed
+          line along a rotation axis.
+
+    lim : float or (float, float), default 1.3
+        Limits of every panel (see :func:`axes3d`).
+    elev, azim : float
+        Viewing angles in degrees.
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    axes : list of Axes
+        One 3D axes per panel, left to right.
+    drawn : list of list of Drawn
+        What was drawn in each panel, in the order frames, vectors, boxes, axis.
+
+    Raises
+    ------
+    TypeError
+        If a panel is not a dict, has no string title or holds items that are not dicts, or an
+        item has keyword arguments its primitive does not take.
+    ValueError
+        If a panel has an unknown key, or an item fails the checks of its primitive (for
+        example a box orientation that is not a rotation).
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> from course_lib import so3
+    >>> fig, axes, drawn = frame_panels([
+    ...     {"title": "before", "frames": [{"label": "A"}]},
+    ...     {"title": "after", "frames": [{"R": so3.rot_z(np.pi / 2), "label": "B"}]}])
+    >>> [a.get_title() for a in axes], np.allclose(drawn[1][0].points[0], [0, 1, 0])
+    (['before', 'after'], True)
+    >>> plt.close(fig)
+    """
+    if isinstance(panels, dict):
+        panels = [panels]
+    panels = list(panels)
+    for i, panel in enumerate(panels):
+        if not isinstance(panel, dict):
+            raise TypeError(f"panels[{i}] must be a dict, got {type(panel).__name__}")
+        unknown = sorted(set(panel) - set(_PANEL_KEYS))
+        if unknown:
+            raise ValueError(f"panels[{i}] has unknown keys {unknown}; "
+                             f"allowed are {list(_PANEL_KEYS)}")
+        if "title" not in panel:
+            raise TypeError(f"panels[{i}] needs a 'title' (str)")
+    fig, axes = axes_row([p["title"] for p in panels], lim=lim, elev=elev, azim=azim)
+    drawn = []
+    for ax, panel in zip(axes, panels):
+        here = [_frame(ax, **kw) for kw in _panel_items(panel, "frames")]
+        here += [draw_vector(ax, **kw) for kw in _panel_items(panel, "vectors")]
+        here += [draw_box(ax, **kw) for kw in _panel_items(panel, "boxes")]
+        if panel.get("axis") is not None:
+            here.append(_axis_line(ax, **_panel_items(panel, "axis")[0]))
+        drawn.append(here)
+    return fig, axes, drawn
+
+
+def plot_error_curves(x, curves, title, xlabel, ylabel="error (log scale)", floor=1e-17,
+                      show_tol=True, reverse_x=True):
+    r"""Log-log plot of errors against a small parameter, e.g. :math:`\pi - \theta`.
+
+    Drawn with :func:`plot_convergence` on a logarithmic x axis. Errors below ``floor``
+    (exact zeros included, which a log axis cannot show) are drawn at ``floor``, so a method
+    that is exact still shows as a line at the bottom of the plot.
+
+    Parameters
+    ----------
+    x : array_like, shape (k,)
+        Positive values of the parameter (the x values).
+    curves : dict of str -> array_like, shape (k,)
+        One labelled error curve per entry (errors >= 0).
+    title, xlabel, ylabel : str
+        Title and axis labels.
+    floor : float, default 1e-17
+        Smallest error drawn (> 0).
+    show_tol : bool, default True
+        Draw the horizontal line ``y = TOL``.
+    reverse_x : bool, default True
+        Let x decrease to the right, so that "approaching the limit" reads left to right.
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : matplotlib.axes.Axes
+
+    Raises
+    ------
+    ValueError
+        If an x value is not positive, shapes differ, an error is negative or non-finite, or
+        ``floor`` is not positive.
+    TypeError
+        If ``curves`` is not a dict.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> gaps = np.logspace(-1, -8, 8)
+    >>> fig, ax = plot_error_curves(gaps, {"1e-16/gap": 1e-16 / gaps, "exact": 0 * gaps},
+    ...                             "Errors", "gap")
+    >>> ax.get_xscale(), bool(ax.xaxis_inverted()), float(ax.get_lines()[1].get_ydata().min())
+    ('log', True, 1e-17)
+    >>> plt.close(fig)
+    """
+    xs = _array(x, "x")
+    if xs.ndim != 1 or not (xs > 0).all():
+        raise ValueError(f"x must be a 1-D array of positive values (log axis), got {x!r}")
+    if not isinstance(curves, dict):
+        raise TypeError(f"curves must be a dict of label -> errors, got {type(curves).__name__}")
+    low = _scalar(floor, "floor", positive=True)
+    clipped = {}
+    for name, err in curves.items():
+        y = _array(err, f"curves[{name!r}]")
+        if (y < 0).any():
+            raise ValueError(f"curves[{name!r}] must be >= 0 (errors), got min {y.min():.3g}")
+        clipped[name] = np.maximum(y, low)
+    fig, ax = plot_convergence(xs, clipped, title=title, show_tol=show_tol, xlabel=xlabel,
+                               ylabel=ylabel)
+    ax.set_xscale("log")
+    if reverse_x:
+        ax.invert_xaxis()
+    return fig, ax
+
+
+def plot_geodesic(R0, R1, steps=4, samples=61, title="Interpolating along the geodesic",
+                  lim=1.2, elev=22.0, azim=-50.0):
+    r"""Frames along the geodesic from ``R0`` to ``R1`` and the paths of their axis tips.
+
+    The geodesic is
+
+    .. math:: R(t) = R_0\, e^{t \log(R_0^T R_1)}, \qquad t \in [0, 1],
+
+    a rotation about one fixed axis at constant angular speed. The frames at ``steps`` + 1
+    equally spaced times are drawn (the two ends labelled :math:`0` and :math:`1`, the ones
+    between thin and dotted) and the tip of each axis traces an arc of a circle.
+
+    Parameters
+    ----------
+    R0, R1 : array_like, shape (3, 3)
+        Rotations at t = 0 and t = 1.
+    steps : int, default 4
+        Number of intervals between the drawn frames (>= 1).
+    samples : int, default 61
+        Number of times at which the tip paths are sampled (>= 2).
+    title : str
+        Title of the axes.
+    lim, elev, azim : float
+        Limits and viewing angles (see :func:`axes3d`).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+    path : ndarray, shape (samples, 3, 3)
+        :math:`R(t)` at the sampled times ``np.linspace(0, 1, samples)``.
+
+    Raises
+    ------
+    ValueError
+        If ``R0`` or ``R1`` is not a rotation, or ``steps``/``samples`` is too small.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> from course_lib import so3
+    >>> fig, ax, path = plot_geodesic(np.eye(3), so3.rot_z(np.pi / 2), samples=3)
+    >>> np.allclose(path[1], so3.rot_z(np.pi / 4)), np.allclose(path[-1], so3.rot_z(np.pi / 2))
+    (True, True)
+    >>> plt.close(fig)
+    """
+    R0 = so3.check_rotation(_matrix(R0, "R0", 3), name="R0")
+    R1 = so3.check_rotation(_matrix(R1, "R1", 3), name="R1")
+    steps = as_count(steps, "steps", minimum=1)
+    samples = as_count(samples, "samples", minimum=2)
+    r = so3.log(R0.T @ R1)
+    ts = np.linspace(0.0, 1.0, samples)
+    path = R0 @ so3.exp(ts[:, None] * r)
+    fig, ax = axes3d(title, lim=lim, elev=elev, azim=azim)
+    for i, color in enumerate(FRAME_COLORS):
+        draw_curve(ax, path[:, :, i], color=color, style="solid", linewidth=1.0)
+    for t in np.linspace(0.0, 1.0, steps + 1)[1:-1]:
+        Rt = R0 @ so3.exp(t * r)
+        for i, color in enumerate(FRAME_COLORS):
+            draw_vector(ax, Rt[:, i], color=color, style="dotted", linewidth=1.0)
+    _frame(ax, R=R0, label="0", style="dashed", name=False)
+    _frame(ax, R=R1, label="1", name=False)
+    return fig, ax, path
+
+
+def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in space",
+                          lim=1.2, elev=30.0, azim=-40.0):
+    r"""The geometry of Rodrigues' formula: a point turning on a circle about the axis.
+
+    With a unit axis :math:`\omega`, the point :math:`q` splits into a part along the axis and a
+    part across it, :math:`q_\parallel = (\omega\cdot q)\,\omega` and
+    :math:`q_\perp = q - q_\parallel`, and
+
+    .. math:: e^{\hat\omega\theta} q = q_\parallel + \cos\theta\, q_\perp
+              + \sin\theta\, \omega\times q,
+
+    a point of the circle of radius :math:`\|q_\perp\|` about the axis, centred at
+    :math:`q_\parallel`. The figure draws the axis, :math:`q`, :math:`q_\parallel`, the circle
+    (dotted), :math:`q_\perp` and :math:`\omega\times q` from the centre, the two terms
+    :math:`\cos\theta\,q_\perp` and :math:`\sin\theta\,\omega\times q` tip to tail (dashed) and
+    the rotated point.
+
+    Parameters
+    ----------
+    omega : array_like, shape (3,)
+        Unit axis.
+    q : array_like, shape (3,)
+        The point; it must not lie on the axis.
+    theta : float
+        Angle in radians.
+    title : str
+        Title of the axes.
+    lim, elev, azim : float
+        Limits and viewing angles (see :func:`axes3d`).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+    parts : dict of str -> ndarray, shape (3,)
+        ``"q_par"``, ``"q_perp"``, ``"w_x_q"`` (:math:`\omega\times q`) and ``"Rq"``
+        (:math:`e^{\hat\omega\theta}q`, from :func:`course_lib.so3.exp`).
+
+    Raises
+    ------
+    ValueError
+        If ``omega`` is not a unit vector, ``q`` lies on the axis, or an input has the wrong
+        shape or non-finite entries.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax, parts = plot_rodrigues_circle([0, 0, 1], [1, 0, 0.5], np.pi / 2)
+    >>> np.round(parts["Rq"], 12), parts["q_par"]
+    (array([0. , 1. , 0.5]), array([0. , 0. , 0.5]))
+    >>> plt.close(fig)
+    """
+    w = _vector(omega, "omega", 3)
+    q = _vector(q, "q", 3)
+    th = _scalar(theta, "theta")
+    Rq = so3.exp(w, th) @ q  # checks that omega is a unit vector
+    q_par = (w @ q) * w
+    q_perp = q - q_par
+    if np.linalg.norm(q_perp) <= TOL:
+        raise ValueError(f"q lies on the axis (‖q_perp‖ = {np.linalg.norm(q_perp):.1e} <= "
+                         f"TOL = {TOL:g}): it does not move, there is no circle to draw")
+    w_x_q = np.cross(w, q)
+    fig, ax = axes3d(title, lim=lim, elev=elev, azim=azim)
+    _axis_line(ax, w, label=r"$\omega$")
+    draw_arc(ax, w, q_perp, 2 * np.pi, center=q_par, style="dotted", color="0.35", arrow=False)
+    draw_arc(ax, w, q_perp, th, center=q_par, color="tab:purple", label=r"$\theta$")
+    draw_vector(ax, q, label="$q$")
+    draw_point(ax, q_par, label=r"$q_\parallel$")
+    draw_vector(ax, q_perp, origin=q_par, label=r"$q_\perp$", color="tab:blue")
+    draw_vector(ax, w_x_q, origin=q_par, label=r"$\omega\times q$", color="tab:green")
+    cos_part = np.cos(th) * q_perp
+    draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")
+    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green",
+                style="dashed")
+    draw_vector(ax, Rq, color="tab:red", label=r"$e^{\hat\omega\theta}q$")
+    return fig, ax, {"q_par": q_par, "q_perp": q_perp, "w_x_q": w_x_q, "Rq": Rq}

@@ -1242,7 +1242,7 @@ def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
 
 def plot_convergence(terms, errors, title="Convergence of the series", ax=None, label=None,
                      show_tol=True, xlabel="number of terms $N$",
-                     ylabel=r"error $\|\cdot\|_F$ (log scale)"):
+                     ylabel=r"error $\|\cdot\|_F$ (log scale)", references=None, logx=False):
     r"""Semilog plot of an approximation error against the number of series terms.
 
     Made for the truncated series of the matrix exponential (eq. 124, 126),
@@ -1270,6 +1270,11 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
         Draw the horizontal line ``y = TOL``.
     xlabel, ylabel : str
         Axis labels.
+    references : dict of str -> array_like, optional
+        Reference curves (a bound, a slope :math:`N^{-p}`), each of the shape of ``terms``,
+        drawn as thin dashed black lines with their label.
+    logx : bool, default False
+        Log scale on the x axis too (for convergence orders: a power law is a straight line).
 
     Returns
     -------
@@ -1279,7 +1284,8 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     Raises
     ------
     ValueError
-        If shapes differ, an error is negative or non-finite, or no error is positive.
+        If shapes differ, an error is negative or non-finite, or no error is positive; or a
+        reference curve does not have the shape of ``terms`` or is not positive.
     TypeError
         If ``ax`` is a 3D axes.
 
@@ -1291,6 +1297,11 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     >>> fig, ax = plot_convergence(n, errors)
     >>> ax.get_yscale(), len(ax.get_lines())
     ('log', 2)
+    >>> plt.close(fig)
+    >>> fig, ax = plot_convergence(n, errors, show_tol=False, logx=True,
+    ...                            references={"bound": [2 * e for e in errors]})
+    >>> ax.get_xscale(), ax.get_lines()[-1].get_label(), ax.get_lines()[-1].get_linestyle()
+    ('log', 'bound', '--')
     >>> plt.close(fig)
     """
     x = _array(terms, "terms")
@@ -1314,9 +1325,20 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
         if _dim(ax) != 2:
             raise TypeError("plot_convergence needs a 2D axes; got a 3D axes")
         fig = ax.figure
+    refs = {}
+    for name, ref in (references or {}).items():
+        y = _array(ref, f"references[{name!r}]")
+        if y.shape != x.shape or not (y > 0).all():
+            raise ValueError(f"references[{name!r}] must be positive with the shape of terms "
+                             f"{x.shape}, got shape {y.shape}")
+        refs[name] = y
     for name, y in ys.items():
         ax.plot(x, y, marker="o", markersize=4, linewidth=1.8, label=name)
+    for name, y in refs.items():
+        ax.plot(x, y, color="black", linestyle="--", linewidth=1.0, label=name)
     ax.set_yscale("log")
+    if logx:
+        ax.set_xscale("log")
     if show_tol:
         ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=f"TOL = {TOL:g}")
     ax.set_xlabel(_text_arg(xlabel, "xlabel"), fontsize=FONT_SIZE)
@@ -1324,7 +1346,7 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
     ax.tick_params(axis="both", labelsize=FONT_SIZE - 2)
     ax.grid(True, which="major", color="0.9")
-    if any(name is not None for name in ys) or show_tol:
+    if any(name is not None for name in ys) or show_tol or refs:
         ax.legend(fontsize=FONT_SIZE - 1)
     return fig, ax
 

@@ -22,6 +22,11 @@ What lives here
   (eqs. 111-116) with the rank of their Jacobian, and the scalar ODE
   :math:`\dot x = a x` (eqs. 95-106).
 
+The derivations themselves (multiplying out :math:`\hat\omega^2`, the power cycle, the
+regrouping of the series) are done in visible notebook cells, as the notes do them; the
+functions here repeat them so that tests and notebooks can *check* a derivation against an
+independent computation.
+
 Everything avoids ``sp.simplify``: the identities here reduce to zero under ``sp.expand``
 (plus ``sp.trigsimp`` when sines and cosines appear), which is fast enough for notebooks run
 under a time budget.

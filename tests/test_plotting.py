@@ -811,6 +811,22 @@ def test_plot_convergence_refuses_bad_errors(terms, errors, match):
         plot_convergence(terms, errors)
 
 
+def test_plot_convergence_draws_dashed_references_on_log_log_axes():
+    fig, ax = plot_convergence([4, 8, 16], [1e-3, 6e-5, 4e-6], show_tol=False, logx=True,
+                               references={"slope $N^{-4}$": [1e-3, 6.25e-5, 3.9e-6]})
+    reference = ax.get_lines()[-1]
+    assert (ax.get_xscale(), ax.get_yscale()) == ("log", "log")
+    assert reference.get_label() == "slope $N^{-4}$" and reference.get_linestyle() == "--"
+    assert [t.get_text() for t in ax.get_legend().get_texts()][-1] == "slope $N^{-4}$"
+    plt.close(fig)
+
+
+@pytest.mark.parametrize("reference", [[1.0, 2.0], [1.0, 0.0, 1.0], [1.0, -1.0, 1.0]])
+def test_plot_convergence_refuses_bad_references(reference):
+    with pytest.raises(ValueError, match="references.*positive with the shape of terms"):
+        plot_convergence([1, 2, 3], [0.1, 0.01, 0.001], references={"bound": reference})
+
+
 # --- a whole scene ----------------------------------------------------------------------------
 
 

@@ -222,6 +222,24 @@ def test_higher_hat_powers_cycle_eqs_152_156():
     assert sym.is_zero_matrix(W**5 - W, unit=True)  # eq. 156
 
 
+def test_induction_step_any_left_factor_times_cube_plus_hat_vanishes_for_unit_omega():
+    # Chapter 3's induction step w^(n+2) = w^(n-1) w^3 = -w^n replaces w^3 by -w under an
+    # arbitrary left factor M = w^(n-1): M (w^3 + w) must reduce to zero with free m_ij.
+    M = sym.rotation_symbols("m")
+    W = hat(omega)
+    product = (M * (W**3 + W)).applyfunc(sp.expand)
+    assert not sym.is_zero_matrix(product)
+    assert unit_reduce(product) == sp.zeros(3, 3)
+
+
+def test_matrix_symbol_exponent_rule_used_by_the_induction_step():
+    # The notebook shows the step with a MatrixSymbol; it relies on sympy merging powers.
+    n = sp.Symbol("n", integer=True, positive=True)
+    Om = sp.MatrixSymbol("W", 3, 3)
+    assert sp.MatMul(Om ** (n - 1), Om**3, evaluate=False).doit() == Om ** (n + 2)
+    assert sp.MatMul(Om ** (n - 1), -Om, evaluate=False).doit() == -(Om**n)
+
+
 def test_cached_identity_mutated_by_caller():
     lhs, _ = sym.hat_squared_identity()
     lhs[0, 0] = 42

@@ -1373,15 +1373,26 @@ def _axis_line(ax, direction, label=None, origin=None, color="0.45"):
     return Drawn("axis", artists, np.stack([o - 1.2 * k, o + 1.2 * k]))
 
 
-def _frame(ax, name=True, **kwargs):
+def _frame(ax, name=True, labels="tip", **kwargs):
     """:func:`draw_frame`; with ``name=False`` the frame's name at its origin is left out.
 
     The axis labels keep the name as subscript. Two frames with a common origin would
-    otherwise write their names on top of each other.
+    otherwise write their names on top of each other. With ``labels="beside"`` each axis
+    label moves from beyond the arrow's tip to the side of the tip: a short frame "before" a
+    motion then keeps its labels off the longer arrows of a frame that shares its axes (a turn
+    about z leaves z in place).
     """
+    if labels not in ("tip", "beside"):
+        raise ValueError(f"labels must be 'tip' or 'beside', got {labels!r}")
     drawn = draw_frame(ax, **kwargs)
     if not name and kwargs.get("label", "A"):
         drawn.artists.pop().remove()  # draw_frame writes the name last
+    if labels == "beside":
+        for tip, text in zip(drawn.points, drawn.artists[1:7:2]):  # arrow, label, arrow, ...
+            n, ha, va = _beside(ax, 3, tip - drawn.origin)
+            text.set_position_3d(tip + 0.6 * _offset(ax) * n)
+            text.set_horizontalalignment(ha)
+            text.set_verticalalignment(va)
     return drawn
 
 
@@ -1413,7 +1424,9 @@ def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
         * ``"title"`` (str, required);
         * ``"frames"``: dicts of keyword arguments of :func:`draw_frame` (``R``, ``label``,
           ``origin``, ``style``, ``scale``), plus ``"name": False`` to leave out the frame's
-          name at its origin (the axis labels still carry it as subscript);
+          name at its origin (the axis labels still carry it as subscript) and
+          ``"labels": "beside"`` to write the axis labels to the side of the arrows' tips
+          instead of beyond them (for a short frame whose axes another frame shares);
         * ``"vectors"``: dicts of keyword arguments of :func:`draw_vector` (``v``, ``origin``,
           ``label``, ``color``, ``style``);
         * ``"boxes"``: dicts of keyword arguments of :func:`draw_box`;
@@ -1675,8 +1688,13 @@ def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in sp
     draw_arc(ax, w, q_perp, 2 * np.pi, center=q_par, style="dotted", color="0.35", arrow=False)
     draw_arc(ax, w, q_perp, th, center=q_par, color="tab:purple", label=r"$\theta$")
     draw_vector(ax, q, label="$q$")
-    draw_point(ax, q_par, label=r"$q_\parallel$")
-    draw_vector(ax, q_perp, origin=q_par, label=r"$q_\perp$", color="tab:blue")
+    draw_point(ax, q_par)
+    right, up = _screen_basis(ax, 3)  # label q_par below left, clear of the arrows above it
+    _text(ax, q_par - 0.5 * _offset(ax) * (right + up), r"$q_\parallel$", ha="right", va="top")
+    draw_vector(ax, q_perp, origin=q_par, color="tab:blue")
+    n, ha, va = _beside(ax, 3, q_perp)  # q_perp ends where q ends: label it at its middle
+    _text(ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue",
+          ha=ha, va=va)
     draw_vector(ax, w_x_q, origin=q_par, label=r"$\omega\times q$", color="tab:green")
     cos_part = np.cos(th) * q_perp
     draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")

@@ -59,6 +59,30 @@ def test_frame_panels_name_false_leaves_out_only_the_name():
     assert len(drawn[0][0].artists) == 6                         # 3 arrows + 3 labels
 
 
+def _position(text):
+    return np.array([text._x, text._y, text._z], dtype=float)
+
+
+def test_frame_panels_labels_beside_keeps_labels_off_a_shared_axis():
+    # regression: the short frame before a turn about z wrote z_B on the longer z_B' arrow
+    R = so3.rot_y(np.pi / 4)
+    fig, axes, drawn = frame_panels([{"title": "t", "frames": [
+        {"R": R, "label": "B", "scale": 0.6, "labels": "beside"},
+        {"R": R @ so3.rot_z(np.pi / 2), "label": "C"}]}])
+    frame = drawn[0][0]
+    labels = [a for a in frame.artists if hasattr(a, "get_text")][:3]
+    for tip, text in zip(frame.points, labels):
+        step = _position(text) - tip
+        axis = (tip - frame.origin) / np.linalg.norm(tip - frame.origin)
+        assert np.linalg.norm(step) > 0.01                       # moved away from the tip
+        assert abs(step @ axis) < 1e-12                          # sideways, not along the arrow
+
+
+def test_frame_panels_rejects_unknown_label_placement():
+    with pytest.raises(ValueError, match="labels must be 'tip' or 'beside'"):
+        frame_panels([{"title": "t", "frames": [{"labels": "middle"}]}])
+
+
 @pytest.mark.parametrize("panels, error", [
     (["not a dict"], TypeError),
     ([{"frames": []}], TypeError),                               # no title
@@ -151,6 +175,14 @@ def test_rodrigues_circle_is_drawn_about_the_axis():
     xs, ys, zs = (np.asarray(a) for a in circle.get_data_3d())
     assert np.allclose(np.hypot(xs, ys), 1.0) and np.allclose(zs, 0.5)
     assert {"$q$", r"$q_\perp$", r"$\omega\times q$", r"$e^{\hat\omega\theta}q$"} <= set(_texts(ax))
+
+
+def test_rodrigues_circle_labels_q_perp_apart_from_q():
+    # regression: q_perp ends where q ends, and both labels were written at that tip
+    fig, ax, parts = plot_rodrigues_circle([0, 0, 1], [0.9, 0, 0.5], 2 * np.pi / 3)
+    where = {t.get_text(): _position(t) for t in ax.texts}
+    assert np.linalg.norm(where[r"$q_\perp$"] - where["$q$"]) > 0.3
+    assert np.linalg.norm(where[r"$q_\parallel$"] - parts["q_par"]) > 0.05
 
 
 @pytest.mark.parametrize("w, q", [([0, 0, 2], [1, 0, 0]),       # not a unit axis

@@ -9,6 +9,7 @@ import base64
 import io
 import json
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -153,6 +154,15 @@ def test_binder_uses_python_311_and_installs_the_course_editable():
     assert (ROOT / "binder" / "runtime.txt").read_text().strip() == "python-3.11"
     reqs = (ROOT / "binder" / "requirements.txt").read_text().splitlines()
     assert "-e ." in reqs
+
+
+def test_not_notebook_exec_deselects_every_notebook_cell():
+    """Regression: `-m 'not notebook_exec'` used to keep all nbval cells (3 of 920 deselected)."""
+    run = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q",
+                          "-m", "not notebook_exec", "notebooks"],
+                         cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert ".ipynb::" not in run.stdout
+    assert re.search(r"no tests collected \(\d+ deselected\)|0 selected", run.stdout), run.stdout[-300:]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -6,7 +6,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.course-installed
 
-.PHONY: lab test e2e student bench clean
+.PHONY: lab test e2e student bench clean test-fast notebooks site site-test
 
 $(STAMP): environment.txt pyproject.toml
 	rm -rf $(VENV)
@@ -16,11 +16,43 @@ $(STAMP): environment.txt pyproject.toml
 	$(BIN)/python -m pip install --quiet --no-deps -e .
 	touch $(STAMP)
 
+# `make lab LAB_ARGS="--no-browser --port=8890"` passes arguments on; as root (containers)
+# --allow-root is added. The "Jupyter news" pop-up is switched off inside .venv only.
+LAB_ARGS  ?=
+ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root)
 lab: $(STAMP)
-	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks
+	$(BIN)/jupyter labextension disable --level=sys_prefix "@jupyterlab/apputils-extension:announcements" >/dev/null 2>&1
+	@echo "Opening the course on notebooks/: the URL to open (with its token) is printed below."
+	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate $(ROOT_FLAG) $(LAB_ARGS)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# Unit, property and doctests without executing any notebook (nbval cells are notebook_exec too).
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -m "not notebook_exec" -q
+
+# Put the setup cell first, execute and clean every chapter (idempotent: a re-run changes
+# nothing), then refresh the README's launch links from pyproject.toml.
+notebooks: $(STAMP)
+	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb
+	$(BIN)/python tools/course_links.py --readme
+
+# The course website in build/site/ from the student copies (SOLUTIONS=1: the instructor's);
+# its tools (site/requirements.txt, MathJax from npm) are installed on first use only.
+SITE_STAMP := $(VENV)/.site-installed
+SOLUTIONS  ?=
+$(SITE_STAMP): $(STAMP) site/requirements.txt
+	$(BIN)/python -m pip install --quiet -r site/requirements.txt
+	touch $(SITE_STAMP)
+
+site: $(SITE_STAMP)
+	$(BIN)/python site/build.py $(if $(SOLUTIONS),--solutions)
+
+# Builds the student site, then opens its pages in headless Chromium (/usr/bin/chromium).
+site-test: $(SITE_STAMP)
+	$(BIN)/python site/build.py
+	$(BIN)/python -m pytest site/test_site.py -q
 
 # Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium);
 # screenshots in build/e2e/.

@@ -1,0 +1,27 @@
+"""Sphinx configuration of the course website (`make site`; site/build.py prepares the pages).
+
+Everything the pages load is served from the site itself: MathJax 3 comes from the npm package
+that site/build.py installs into build/site-deps/, the theme is Sphinx's own (alabaster).
+"""
+
+import os
+
+project = "Rigid-body rotations"
+author = "the rotations-course authors"
+copyright = "2026, the rotations-course authors (text CC BY 4.0, code MIT)"
+
+extensions = ["myst_nb"]
+exclude_patterns = ["_build", "**.ipynb_checkpoints"]
+html_theme = "alabaster"
+html_title = project
+html_theme_options = {"nosidebar": False, "show_powered_by": False}
+html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # holds mathjax/ (site/build.py)
+mathjax_path = "mathjax/tex-chtml.js"                 # relative to _static/
+html_show_sourcelink = False
+
+# The notebooks are executed by site/build.py (tools/notebooks.py, which does not stall on
+# widget cells); myst-nb only renders them.
+nb_execution_mode = "off"
+nb_render_markdown_format = "myst"   # Markdown(...) outputs (tables) are parsed, math included
+myst_enable_extensions = ["dollarmath", "amsmath"]
+suppress_warnings = ["mystnb.unknown_mime_type"]

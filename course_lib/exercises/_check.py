@@ -112,6 +112,13 @@ def _generic_hint(spec, A, Ev):
         if abs(c - 1) > 1e-6 and abs(c + 1) > 1e-6 and E.close(A, c * Ev):
             return ("your answer is a constant multiple of the right one: check the numerical "
                     "factors.")
+        axes = tuple(range(1, A.ndim))
+        norms = np.sum(Ev * Ev, axis=axes)
+        if np.all(norms > E.TOL):
+            ck = np.sum(A * Ev, axis=axes) / norms
+            if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
+                return ("your answer is the right one times a factor that changes with the "
+                        "symbols: check the scalar factors (for instance the powers of ‖ω‖).")
     if len(shape) == 2 and shape[0] == shape[1]:
         hint = _symmetry_hint(A, Ev)
         if hint:
@@ -136,7 +143,8 @@ def _generic_hint(spec, A, Ev):
 
 def _property_hint(ex, M, syms, pts):
     for residual, message in ex.properties:
-        R = sp.ImmutableMatrix(residual(M))
+        r = residual(M)
+        R = sp.ImmutableMatrix(r if isinstance(r, sp.MatrixBase) else [[r]])
         vals = E.values("explicit", R, syms, pts)
         if not E.close(vals, np.zeros_like(vals)):
             return message

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions import (
     Identity, MatAdd, MatMul, MatPow, MatrixExpr, MatrixSymbol, Transpose, ZeroMatrix,
 )
@@ -52,7 +53,10 @@ def _too_complex(what):
 def _not_allowed(node):
     kind = type(node)
     name = getattr(kind, "__name__", str(kind))
-    if kind.__module__.split(".")[0] != "sympy":
+    if isinstance(node, AppliedUndef):
+        return Rejected(f"not allowed here: the undefined function {node} (give an explicit "
+                        "expression).", "not allowed")
+    if (getattr(kind, "__module__", None) or "").split(".")[0] != "sympy":
         return Rejected(f"not allowed here: your answer contains an object of type {name} "
                         "(a class of your own); build it from plain sympy objects.",
                         "not allowed")
@@ -77,8 +81,6 @@ def _check_node(node, symbols, numeric):
         return
     if numeric and kind is sp.Abs:
         return
-    if kind.__module__.startswith("sympy.core.numbers") and node.is_Rational:
-        return                                   # other rational singletons (e.g. 1/2)
     raise _not_allowed(node)
 
 
@@ -196,7 +198,8 @@ def _scalar(v, numeric):
             raise Rejected(f"your answer is a {type(v).__name__} (an equation or a truth "
                            "value?), not an expression; for an Eq from dsolve take its .rhs.")
         return v
-    if kind.__module__.split(".")[0] not in ("builtins", "numpy", "sympy"):
+    if (getattr(kind, "__module__", None) or "").split(".")[0] not in ("builtins", "numpy",
+                                                                        "sympy"):
         raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
                        "own); give plain numbers or sympy expressions.", "not allowed")
     raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an "

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import hashlib
 import zlib
+from functools import lru_cache
 from math import comb
 
 import numpy as np
@@ -40,7 +41,8 @@ NPOINTS = 40
 STEP = 4 * TOL
 _SALT = "rotations-course/exercises/v1"
 _TURN = 4 * np.pi
-_MAX_EXACT_TERMS = 3000
+_MAX_EXACT_TERMS = 300
+_MAX_EXACT_DEGREE = 8
 
 #: What each stand-in symbol of a form means in the base symbols.
 SCALAR_DEFINITIONS = {S.xx: S.x.dot(S.x), S.yy: S.y.dot(S.y), S.xy: S.x.dot(S.y)}
@@ -86,8 +88,9 @@ def _random_rotations(rng, n):
     ], -2)
 
 
+@lru_cache(maxsize=64)
 def points(name, spec):
-    """Seeded values of the base symbols: {symbol: array of NPOINTS floats}."""
+    """Seeded values of the base symbols: {symbol: array of NPOINTS floats} (cached)."""
     rng = np.random.default_rng(zlib.crc32(name.encode()))
     wanted = set(base_symbols(spec))
     out = {}
@@ -112,7 +115,7 @@ def points(name, spec):
 
 def _lambdified(M, syms, pts):
     """Values of an explicit matrix at the points: complex array (NPOINTS, rows, cols)."""
-    f = sp.lambdify(syms, sp.Matrix(M).tolist(), modules="numpy")
+    f = sp.lambdify(syms, sp.Matrix(M).tolist(), modules="numpy", docstring_limit=0)
     args = [pts[s].astype(complex) for s in syms]
     with np.errstate(all="ignore"):
         rows = f(*args)
@@ -123,9 +126,10 @@ def _lambdified(M, syms, pts):
 def _eval_matrix_expr(e, syms, pts, cache):
     kind = type(e)
     if kind is MatrixSymbol:
-        if e not in cache:
-            cache[e] = _lambdified(MATRIX_DEFINITIONS[e], syms, pts)
-        return cache[e]
+        key = (e, syms)
+        if key not in cache:
+            cache[key] = _lambdified(MATRIX_DEFINITIONS[e], syms, pts)
+        return cache[key]
     if kind is Identity:
         return np.broadcast_to(np.eye(e.shape[0], dtype=complex), (NPOINTS, *e.shape))
     if kind is ZeroMatrix:
@@ -157,10 +161,17 @@ def _eval_matrix_expr(e, syms, pts, cache):
     raise Rejected(f"could not evaluate the {kind.__name__} in your answer.")
 
 
+#: Values of the matrix symbols at the (cached) points of an exercise, by id of the points.
+_SYMBOL_VALUES = {}
+
+
 def values(form, M, syms, pts):
     """Real values (NPOINTS, rows, cols) of an answer read by ``read_answer``."""
     if form == "matrix":
-        vals = _eval_matrix_expr(M.xreplace(SCALAR_DEFINITIONS), syms, pts, {})
+        entry = _SYMBOL_VALUES.get(id(pts))
+        if entry is None or entry[0] is not pts:         # keeps pts alive: ids never reused
+            entry = _SYMBOL_VALUES[id(pts)] = (pts, {})
+        vals = _eval_matrix_expr(M.xreplace(SCALAR_DEFINITIONS), syms, pts, entry[1])
     else:
         vals = _lambdified(M.xreplace(SCALAR_DEFINITIONS), syms, pts)
     if not np.all(np.isfinite(vals)):
@@ -177,8 +188,9 @@ def exact_form(name, M, unit_omega):
     """Salted digest of the exact normal form of an explicit answer, or None if too big."""
     entries = []
     for e in M.xreplace(SCALAR_DEFINITIONS):
-        n = len(e.free_symbols)
-        if comb(n + degree_bound(e), n) > _MAX_EXACT_TERMS or sp.count_ops(e) > 200:
+        n, deg = len(e.free_symbols), degree_bound(e)
+        if deg > _MAX_EXACT_DEGREE or comb(n + deg, n) > _MAX_EXACT_TERMS or \
+                sp.count_ops(e) > 200:
             return None
         e = sp.expand(e)
         if unit_omega and e.free_symbols & set(S.omega):

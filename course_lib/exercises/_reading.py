@@ -21,7 +21,7 @@ from sympy.matrices.expressions import (
 
 __all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
 
-MAX_NODES = 1500
+MAX_NODES = 800
 MAX_DEGREE = 24
 MAX_MATRIX_DEGREE = 6
 
@@ -298,6 +298,8 @@ def read_choice(answer, letters):
     if answer is None:
         raise Rejected("no answer yet (the answer variable is still None).", "no answer")
     kind = type(answer)
+    if kind in (str, set, frozenset, list, tuple) and len(answer) > 4 * len(letters):
+        raise Rejected(f"give at most the {len(letters)} letters {', '.join(letters)}.")
     if kind is str:
         items = [c for c in answer if c not in " ,;"]
     elif kind in (set, frozenset, list, tuple):

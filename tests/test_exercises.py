@@ -427,3 +427,15 @@ def test_regression_hostile_answers_get_a_message_not_a_hang_or_internal_error(n
     assert result.status in ("too complex", "not allowed", "wrong", "malformed"), str(result)
     assert "could not check" not in result.message
     assert not re.search(r"\d\.\d{5,}", result.message)      # no sample point leaks
+
+
+def test_readme_states_the_exercise_count_and_points_of_the_bank():
+    text = (ROOT / "README.md").read_text()
+    total = sum(ex.points for ex in EXERCISES.values())
+    assert f"{len(EXERCISES)} in all ({total} points)" in text
+    for chapter in (1, 2, 3, 4):
+        exs = exercises(chapter)
+        levels = [sum(ex.level == lv for ex in exs) for lv in ("warm-up", "core", "challenge")]
+        row = " | ".join(map(str, levels)) + f" | {len(exs)} exercises, " \
+                                              f"{sum(ex.points for ex in exs)} points |"
+        assert row in text, row

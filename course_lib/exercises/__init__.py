@@ -50,7 +50,6 @@ from .. import exercise_bank
 from ..symbolic import (
     A, B, R, W, X, Y, a, alpha, beta, d, hat, omega, phi, t, theta, u, x, x_0, xx, xy, y, yy, z,
 )
-from ..symbolic import rotation_symbols as _rotation_symbols
 from ._check import expected_shape_phrase, judge
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value
 from ._reading import Rejected
@@ -58,12 +57,9 @@ from ._reading import Rejected
 __all__ = [
     "EXERCISES", "LEVELS", "CheckResult", "Choice", "Exercise", "Expr", "Value",
     "check", "exercises", "get", "names",
-    "A", "B", "R", "R_generic", "W", "X", "Y", "a", "alpha", "beta", "d", "hat", "omega", "phi",
+    "A", "B", "R", "W", "X", "Y", "a", "alpha", "beta", "d", "hat", "omega", "phi",
     "t", "theta", "u", "x", "x_0", "xx", "xy", "y", "yy", "z",
 ]
-
-#: Generic real 3x3 matrix with entries :math:`r_{ij}` (its columns are :math:`r_1, r_2, r_3`).
-R_generic = _rotation_symbols("r")
 
 #: Every exercise of the course, by name, in chapter order.
 EXERCISES = {ex.name: ex for ex in exercise_bank.all_exercises()}

@@ -78,6 +78,9 @@ def base_symbols(spec):
 
 
 def _random_rotations(rng, n):
+    """Uniform rotations from unit quaternions. Kept here rather than calling
+    ``so3.random_rotations``: the stored fingerprints depend on these exact draws, so a change
+    of the library's sampler must not change what the checker compares with."""
     q = rng.normal(size=(n, 4))
     q /= np.linalg.norm(q, axis=1, keepdims=True)
     w, x, y, z = q.T

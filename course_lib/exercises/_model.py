@@ -18,7 +18,7 @@ __all__ = ["CheckResult", "Choice", "Exercise", "Expr", "LEVELS", "Value"]
 LEVELS = {"warm-up": 1, "core": 2, "challenge": 3}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class CheckResult(Verdict):
     """The verdict on one answer: ``ok``, the message (exercise name first) and a ``status``.
 
@@ -35,6 +35,9 @@ class CheckResult(Verdict):
     """
 
     status: str = "wrong"
+
+    def __repr__(self):
+        return str(self)                   # plain-text front ends show the verdict line
 
 
 @dataclass(frozen=True)

@@ -176,7 +176,7 @@ def matrix_degree(e):
     return out
 
 
-def _scalar(v, numeric):
+def _scalar(v):
     kind = type(v)
     if kind is bool or kind is np.bool_:
         raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
@@ -206,7 +206,7 @@ def _scalar(v, numeric):
                    "expression.")
 
 
-def _rows(answer, numeric):
+def _rows(answer):
     """Nested lists / tuples / arrays as a list of rows of sympy scalars."""
     kind = type(answer)
     if kind is np.ndarray:
@@ -219,15 +219,15 @@ def _rows(answer, numeric):
         answer = answer.tolist()
         kind = type(answer)
     if kind not in (list, tuple):
-        return [[_scalar(answer, numeric)]], "a scalar"
+        return [[_scalar(answer)]], "a scalar"
     rows = []
     for r in answer:
         if type(r) is np.ndarray:
             r = r.tolist()
         if type(r) in (list, tuple):
-            rows.append([_scalar(v, numeric) for v in r])
+            rows.append([_scalar(v) for v in r])
         else:
-            rows.append([_scalar(r, numeric)])
+            rows.append([_scalar(r)])
     lengths = {len(r) for r in rows}
     if len(lengths) > 1:
         raise Rejected("could not read your answer: its rows have different lengths.")
@@ -283,7 +283,7 @@ def read_answer(answer, shape, symbols, numeric=False):
     else:
         if kind is np.ndarray and answer.ndim == 0:
             answer = answer.item()
-        rows, got = _rows(answer, numeric)
+        rows, got = _rows(answer)
         M = sp.ImmutableMatrix(rows)
     _walk(M, symbols, numeric)
     M = _fit_shape(M, shape, got)

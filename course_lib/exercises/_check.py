@@ -187,18 +187,20 @@ def judge_expr(ex, fp, answer):
 
 
 def _numbers(M):
-    vals = []
-    for e in M:
-        try:
-            z = complex(e.evalf(20))
-        except (TypeError, ValueError):
-            raise Rejected("could not read your answer as numbers.") from None
-        if not np.isfinite(z):
-            raise Rejected("your answer contains nan or infinity.")
-        if abs(z.imag) > E.TOL:
-            raise Rejected("your answer is complex; a real answer is expected.")
-        vals.append(z.real)
-    return np.array(vals)
+    """The entries of a numeric answer, evaluated in double precision (never in mpmath, whose
+    arbitrary precision makes sin(exp(exp(50))) take forever)."""
+    f = E.numeric_function((), M)
+    try:
+        with np.errstate(all="ignore"):
+            vals = np.array(f(), dtype=complex).ravel()
+    except (TypeError, ValueError, OverflowError):
+        raise Rejected("could not read your answer as numbers.") from None
+    if not np.all(np.isfinite(vals)):
+        raise Rejected("your answer contains nan or infinity (or a number too large for "
+                       "double precision).")
+    if np.max(np.abs(vals.imag)) > E.TOL:
+        raise Rejected("your answer is complex; a real answer is expected.")
+    return vals.real
 
 
 def _value_hint(ex, fp, v):

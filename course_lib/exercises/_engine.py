@@ -116,9 +116,24 @@ def points(name, spec):
 
 # ------------------------------------------------------------------------------ evaluation
 
+#: The numpy functions of the allowed elementary functions. lambdify with this namespace
+#: instead of modules="numpy" avoids importing all of numpy's namespace (seconds, once).
+_NAMESPACE = {
+    "sin": np.sin, "cos": np.cos, "tan": np.tan, "exp": np.exp, "log": np.log,
+    "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan, "atan2": np.arctan2,
+    "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh, "sqrt": np.sqrt, "Abs": np.abs,
+    "pi": np.pi, "E": np.e, "I": 1j,
+}
+
+
+def numeric_function(syms, M):
+    """A numpy function of ``syms`` returning the entries of the matrix M as nested lists."""
+    return sp.lambdify(syms, sp.Matrix(M).tolist(), modules=[_NAMESPACE], docstring_limit=0)
+
+
 def _lambdified(M, syms, pts):
     """Values of an explicit matrix at the points: complex array (NPOINTS, rows, cols)."""
-    f = sp.lambdify(syms, sp.Matrix(M).tolist(), modules="numpy", docstring_limit=0)
+    f = numeric_function(syms, M)
     args = [pts[s].astype(complex) for s in syms]
     with np.errstate(all="ignore"):
         rows = f(*args)

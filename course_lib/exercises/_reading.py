@@ -24,6 +24,7 @@ __all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
 MAX_NODES = 800
 MAX_DEGREE = 24
 MAX_MATRIX_DEGREE = 6
+MAX_INTEGER = 10**30
 
 _FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.asin, sp.acos, sp.atan, sp.atan2,
               sp.sinh, sp.cosh, sp.tanh)
@@ -78,6 +79,11 @@ def _check_node(node, symbols, numeric):
     if kind in _SCALAR_TYPES or kind in _MATRIX_TYPES or kind in _EXPLICIT:
         if kind is sp.Symbol or kind is MatrixSymbol:
             _check_symbol(node, symbols, numeric)
+        elif kind is sp.Integer or kind is sp.Rational:
+            if max(abs(node.p), node.q) > MAX_INTEGER:
+                raise _too_complex(f"a number with more than {len(str(MAX_INTEGER))} digits")
+        elif kind is sp.Float and not abs(float(node)) < 1e300:
+            raise _too_complex("a number too large for double precision")
         return
     if numeric and kind is sp.Abs:
         return

@@ -57,6 +57,11 @@ def course(tmp_path_factory):
         nb = sync_exercises.sync(nbformat.v4.new_notebook(), chapter)
         nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                      "language": "python"}
+        if chapter == 1:                           # an instructor's hidden test
+            cell = next(c for c in nb.cells if c.id == "coords_by_projection-check")
+            cell.source += ("\n### BEGIN HIDDEN TESTS\n"
+                            "assert check('coords_by_projection', answer_coords_by_projection)\n"
+                            "### END HIDDEN TESTS")
         nbformat.write(nb, sections / f"{chapter:02d}_exercises.ipynb")
     return root
 
@@ -89,6 +94,14 @@ def graded(course):
     code, out = run(["autograde", "exercises", "--force", "--create"], course)
     assert code == 0, out
     return course
+
+
+def test_released_copies_hold_neither_solutions_nor_hidden_tests(graded):
+    nb = nbformat.read(graded / "release" / "exercises" / "01_exercises.ipynb", as_version=4)
+    text = "\n".join(c.source for c in nb.cells)
+    assert "HIDDEN TESTS" not in text and "BEGIN SOLUTION" not in text
+    check_cell = next(c for c in nb.cells if c.id == "coords_by_projection-check")
+    assert "assert result.ok, result.message" in check_cell.source
 
 
 def test_autograde_gives_the_instructor_full_marks_and_a_blank_copy_zero(graded):

@@ -95,7 +95,9 @@ def build():
 
 
 def dumps(data):
-    return json.dumps(data, indent=0, sort_keys=True) + "\n"
+    """JSON with one exercise per line (diffs show which exercise changed)."""
+    rows = [f"{json.dumps(k)}: {json.dumps(data[k], sort_keys=True)}" for k in sorted(data)]
+    return "{\n" + ",\n".join(rows) + "\n}\n"
 
 
 def main(argv=None):

@@ -453,3 +453,24 @@ def test_readme_states_the_exercise_count_and_points_of_the_bank():
 def test_regression_numeric_answers_are_evaluated_in_double_precision_not_mpmath(hostile):
     result = check("two_mirrors", hostile)
     assert not result.ok and result.status in ("too complex", "malformed"), str(result)
+
+
+def test_regression_no_method_of_a_foreign_class_is_called():
+    calls = []
+
+    class Spy(sp.Symbol):
+        def __eq__(self, other):
+            calls.append("eq")
+            return True
+
+        def __hash__(self):
+            calls.append("hash")
+            return 0
+
+    spy = Spy("s")
+    for name, answer in (("ode_shifted", spy), ("unit_tangent", [spy, 0, 0]),
+                         ("two_mirrors", spy), ("lagrange_identity", (spy,))):
+        calls.clear()
+        result = check(name, answer)
+        assert result.status == "not allowed", str(result)
+        assert calls == [], (name, calls)

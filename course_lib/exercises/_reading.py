@@ -30,9 +30,10 @@ _FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.asin, sp.acos, sp.atan,
               sp.sinh, sp.cosh, sp.tanh)
 _SCALAR_TYPES = {sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Integer, sp.Rational, sp.Float,
                  *_FUNCTIONS}
-_NUMBER_SINGLETONS = (sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.S.Half, sp.S.Pi, sp.S.Exp1,
-                      sp.S.ImaginaryUnit)
-_BAD_NUMBERS = (sp.S.NaN, sp.S.Infinity, sp.S.NegativeInfinity, sp.S.ComplexInfinity)
+_NUMBER_SINGLETONS = {type(n) for n in (sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.S.Half,
+                                        sp.S.Pi, sp.S.Exp1, sp.S.ImaginaryUnit)}
+_BAD_NUMBERS = {type(n) for n in (sp.S.NaN, sp.S.Infinity, sp.S.NegativeInfinity,
+                                  sp.S.ComplexInfinity)}
 _MATRIX_TYPES = {MatAdd, MatMul, MatPow, Transpose, Identity, ZeroMatrix, MatrixSymbol}
 _EXPLICIT = (sp.ImmutableDenseMatrix, sp.MutableDenseMatrix)
 _NUMPY_INTS = (np.int64, np.int32, np.int16, np.int8)
@@ -71,10 +72,11 @@ def _not_allowed(node):
 
 
 def _check_node(node, symbols, numeric):
+    """Types are looked at first and exactly: no method of a foreign class is ever called."""
     kind = type(node)
-    if node in _BAD_NUMBERS:
+    if kind in _BAD_NUMBERS:
         raise Rejected("your answer contains nan or infinity.")
-    if any(node is s for s in _NUMBER_SINGLETONS):
+    if kind in _NUMBER_SINGLETONS:
         return
     if kind in _SCALAR_TYPES or kind in _MATRIX_TYPES or kind in _EXPLICIT:
         if kind is sp.Symbol or kind is MatrixSymbol:
@@ -199,6 +201,9 @@ def _scalar(v):
     if kind is str:
         raise Rejected("your answer is a string (text), not a string of numbers or "
                        "expressions: give sympy expressions or numbers, not a string.")
+    if isinstance(v, sp.Basic) and (getattr(kind, "__module__", None) or "")[:6] != "sympy.":
+        raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
+                       "own); give plain numbers or sympy expressions.", "not allowed")
     if isinstance(v, sp.Basic) and not isinstance(v, (sp.MatrixBase, MatrixExpr)):
         if not isinstance(v, sp.Expr):
             raise Rejected(f"your answer is a {type(v).__name__} (an equation or a truth "

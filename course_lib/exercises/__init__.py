@@ -61,8 +61,17 @@ __all__ = [
     "t", "theta", "u", "x", "x_0", "xx", "xy", "y", "yy", "z",
 ]
 
-#: Every exercise of the course, by name, in chapter order.
-EXERCISES = {ex.name: ex for ex in exercise_bank.all_exercises()}
+@lru_cache(maxsize=1)
+def _registry():
+    """Every exercise of the bank, by name, in chapter order (loaded on first use, so that the
+    bank's modules can import this package's classes without an import cycle)."""
+    return {ex.name: ex for ex in exercise_bank.all_exercises()}
+
+
+def __getattr__(name):
+    if name == "EXERCISES":         # every exercise of the course, by name, in chapter order
+        return _registry()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def get(name):
@@ -73,14 +82,15 @@ def get(name):
     >>> get("hat_fifth").label, get("hat_fifth").level, get("hat_fifth").points
     ('3.3', 'core', 2)
     """
-    if not isinstance(name, str) or name not in EXERCISES:
-        raise KeyError(f"unknown exercise {name!r}; known exercises: {', '.join(EXERCISES)}")
-    return EXERCISES[name]
+    registry = _registry()
+    if not isinstance(name, str) or name not in registry:
+        raise KeyError(f"unknown exercise {name!r}; known exercises: {', '.join(registry)}")
+    return registry[name]
 
 
 def names(chapter=None):
     """Names of the exercises (of one chapter when ``chapter`` is given), in order."""
-    return [ex.name for ex in exercises(chapter)] if chapter else list(EXERCISES)
+    return [ex.name for ex in exercises(chapter)]
 
 
 def exercises(chapter=None):
@@ -92,11 +102,11 @@ def exercises(chapter=None):
         If ``chapter`` is not one of the chapters of the bank.
     """
     if chapter is None:
-        return list(EXERCISES.values())
+        return list(_registry().values())
     if chapter not in exercise_bank.CHAPTERS:
         raise ValueError(f"chapter must be one of {sorted(exercise_bank.CHAPTERS)}, "
                          f"got {chapter!r}")
-    return [ex for ex in EXERCISES.values() if ex.chapter == chapter]
+    return [ex for ex in _registry().values() if ex.chapter == chapter]
 
 
 @lru_cache(maxsize=1)

@@ -116,7 +116,7 @@ $e^{\hat\omega\theta}$ in closed form, $e^{\hat\omega\theta} = I + \alpha\,\hat\
 \beta\,\hat\omega^2$, with coefficients $\alpha, \beta$ in $\theta$ and
 $\lVert\omega\rVert = \sqrt{\omega_1^2 + \omega_2^2 + \omega_3^2}$. Give a matrix expression of
 degree at most 2 in `W` (standing for $\hat\omega$), e.g.
-`sp.eye(3) + alpha * W + beta * W**2`.
+`sp.eye(3) + c1 * W + c2 * W**2` with your α and β as `c1` and `c2`.
 """,
         answer=Expr(shape=(3, 3), domain=(*_W, theta), allowed=(W, theta, *_W),
                     matrix_degree=2),

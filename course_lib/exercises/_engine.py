@@ -5,7 +5,7 @@ the repository tool ``tools/exercise_fingerprints.py`` from the instructor's ref
 
 - a symbolic answer (:class:`~course_lib.exercises._model.Expr`): its values at
   :data:`NPOINTS` seeded points spread over the whole domain (ω on the whole unit sphere, angles
-  over four turns each way, t over [−4, 4], ...) and a salted digest of its exact normal form
+  over two full turns each way, t over [−4, 4], ...) and a salted digest of its exact normal form
   (expanded, reduced modulo :math:`\lVert\omega\rVert = 1` where ω is a unit vector);
 - a numeric answer (:class:`~course_lib.exercises._model.Value`): a salted digest of every entry
   rounded to a grid of step :math:`4\,\mathrm{TOL}`, on whichever of two offset grids keeps the

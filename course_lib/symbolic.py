@@ -161,6 +161,23 @@ w = vector("w")
 #: A general vector :math:`v = (v_1, v_2, v_3)^T` of real symbols.
 v = vector("v")
 
+# Symbols of the exercises (course_lib.exercises re-exports them). The matrix symbols stand for a
+# whole matrix, so that an exercise can ask for an answer *in terms of* that matrix.
+#: General vectors :math:`x, y, z` of real symbols (3x1 columns).
+x, y, z = vector("x"), vector("y"), vector("z")
+#: Real scalars: time :math:`t`, rate :math:`a`, initial value :math:`x_0`, angles.
+t, a, x_0 = sp.symbols("t a x_0", real=True)
+alpha, beta, phi = sp.symbols("alpha beta phi", real=True)
+#: Stand-ins for :math:`x^T x`, :math:`y^T y`, :math:`x^T y` (an answer in these three numbers).
+xx, yy, xy = sp.symbols("x·x y·y x·y", real=True)
+#: Matrix symbols: ``W`` for :math:`\hat\omega`, ``u`` for :math:`\omega` as a 3x1 column,
+#: ``X``, ``Y`` for :math:`x, y`, rotations ``A``, ``B``, ``R`` and a translation ``d``.
+W = sp.MatrixSymbol("W", 3, 3)
+u, X, Y, d = (sp.MatrixSymbol(n, 3, 1) for n in ("u", "X", "Y", "d"))
+A, B, R = (sp.MatrixSymbol(n, 3, 3) for n in ("A", "B", "R"))
+__all__ += ["x", "y", "z", "t", "a", "x_0", "alpha", "beta", "phi", "xx", "yy", "xy",
+            "W", "u", "X", "Y", "d", "A", "B", "R"]
+
 
 # ---------------------------------------------------------------------------------------------
 # Input handling

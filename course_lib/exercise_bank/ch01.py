@@ -1,0 +1,125 @@
+r"""Exercises of chapter 1 (§0.1.1 rigid bodies and rigid body motions)."""
+
+from course_lib.exercises._model import Choice, Exercise, Expr, Value
+from course_lib.symbolic import t, x, xx, xy, y, yy, z
+
+CHAPTER = 1
+SETUP = ("import numpy as np\nimport sympy as sp\n"
+         "from course_lib.exercises import check, t, x, y, z, xx, yy, xy")
+
+EXERCISES = [
+    Exercise(
+        name="coords_by_projection", chapter=1, number=1, level="warm-up",
+        title="Coordinates by projection",
+        statement=r"""
+A right-handed orthonormal frame has the basis vectors (in reference coordinates)
+$e_1 = (1/\sqrt2,\ 1/\sqrt2,\ 0)$, $e_2 = (-1/\sqrt2,\ 1/\sqrt2,\ 0)$, $e_3 = (0,\ 0,\ 1)$.
+The point $p$ has reference coordinates $(1,\ 3,\ 2)$. Find its coordinates
+$(p \cdot e_1,\ p \cdot e_2,\ p \cdot e_3)$ in the frame $\{e_1, e_2, e_3\}$
+(equations (3)–(5)). Give a 3-vector (list, numpy array or sympy Matrix).
+""",
+        answer=Value(shape=(3,)),
+        tip="Each coordinate is the projection of p onto one basis vector (equations (3)–(5)).",
+        mistakes={"weights": "you combined the basis vectors with p's entries as weights; a "
+                             "coordinate is a projection, the dot product of p with one basis "
+                             "vector."},
+    ),
+    Exercise(
+        name="angle_from_lengths", chapter=1, number=2, level="warm-up",
+        title="An angle from three lengths",
+        statement=r"""
+Two vectors have the lengths $\lVert x\rVert = 3$ and $\lVert y\rVert = 4$, and
+$\lVert x - y\rVert = \sqrt{13}$. Expand $\lVert x - y\rVert^2 = (x-y)^T(x-y)$ to find $x^Ty$
+(the idea behind the polarization identity (17)), then the angle between $x$ and $y$.
+Give the angle in radians, in $[0, \pi]$.
+""",
+        answer=Value(shape=(), angle=True),
+        tip="‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy, and xᵀy = ‖x‖ ‖y‖ cos(angle).",
+        mistakes={
+            "cosine": "that is the cosine of the angle; the exercise asks for the angle itself.",
+            "sign": "sign: ‖x − y‖² = ‖x‖² + ‖y‖² − 2xᵀy, so a short x − y means a positive "
+                    "inner product and an acute angle.",
+        },
+    ),
+    Exercise(
+        name="which_are_rigid", chapter=1, number=3, level="core",
+        title="Which maps are rigid body transformations?",
+        statement=r"""
+Which of these maps $g:\mathbb{R}^3\to\mathbb{R}^3$ are rigid body transformations in the sense
+of Definition 1 (they keep every distance **and** the cross product,
+$g_*(v) \times g_*(w) = g_*(v \times w)$)?
+
+(a) $g(p) = -p$ &nbsp; (b) $g(p) = R_z(\pi/3)\,p + (1, 2, 0)$ &nbsp; (c) $g(p) = 2p$ &nbsp;
+(d) $g(p) = (p_2, p_1, p_3)$ &nbsp; (e) $g(p) = (p_2, p_3, p_1)$ &nbsp;
+(f) $g(p) = p + (0, 0, 5)$
+
+Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
+""",
+        answer=Choice(letters="abcdef"),
+        tip="Test each map on e₁, e₂: are the distances kept, and is g(e₁) × g(e₂) = g(e₃)?",
+        mistakes={
+            "mirrors": "some of your maps keep every distance but turn a right-handed frame into "
+                       "a left-handed one: compare g(e₁) × g(e₂) with g(e₃).",
+            "translation": "a translation keeps distances and cross products too "
+                           "(Definition 1 allows g(p) = Rp + d).",
+        },
+    ),
+    Exercise(
+        name="unit_tangent", chapter=1, number=4, level="core",
+        title="The unit tangent of a helix",
+        statement=r"""
+A particle follows the helix $p(t) = (\cos 2t,\ \sin 2t,\ 3t)$ (a trajectory as in equation
+(6)). Find the unit tangent $T(t) = \dot p(t) / \lVert \dot p(t)\rVert$ in the time symbol `t`,
+**simplified**: no square root of an expression in $t$ may be left. Give a 3-vector.
+""",
+        answer=Expr(shape=(3,), domain=(t,), no_roots=True),
+        tip="Differentiate each component (mind the chain rule), then simplify ‖ṗ‖ with "
+            "sin² + cos² = 1.",
+        mistakes={"velocity": "that is the velocity ṗ; divide it by its length ‖ṗ‖ (a unit "
+                              "vector has length 1)."},
+    ),
+    Exercise(
+        name="lagrange_identity", chapter=1, number=5, level="core",
+        title="The length of a cross product",
+        statement=r"""
+For the generic vectors `x`, `y`, write $\lVert x \times y\rVert^2$ in terms of the three
+numbers $x^Tx$, $y^Ty$ and $x^Ty$ only: use the symbols `xx`, `yy`, `xy` (standing for
+$x^Tx$, $y^Ty$, $x^Ty$). Expand both sides in components with sympy to find and confirm the
+formula. Give a scalar expression in `xx`, `yy`, `xy`.
+""",
+        answer=Expr(shape=(), domain=tuple(x) + tuple(y), allowed=(xx, yy, xy)),
+        tip="Try x = y (the cross product vanishes) and x ⊥ y (it has length ‖x‖‖y‖).",
+        mistakes={"plus": "sign: for x = y the cross product is 0, so your two terms must "
+                          "cancel there."},
+    ),
+    Exercise(
+        name="bac_cab", chapter=1, number=6, level="challenge",
+        title="A double cross product",
+        statement=r"""
+For the generic vectors `x`, `y`, `z`, the vector $x \times (y \times z)$ lies in the plane of
+$y$ and $z$: $x \times (y \times z) = \alpha\, y + \beta\, z$. Find the scalars $\alpha$ and
+$\beta$ as expressions in the components of $x, y, z$ (derive it from the components; check it
+with sympy). Give the pair $(\alpha, \beta)$ as a list of two expressions.
+""",
+        answer=Expr(shape=(2,), domain=tuple(x) + tuple(y) + tuple(z)),
+        tip="Compare the first component of both sides; α and β are inner products.",
+        mistakes={"swapped": "you swapped α and β: α is the coefficient of y."},
+    ),
+    Exercise(
+        name="motion_from_points", chapter=1, number=7, level="challenge",
+        title="A motion from three points",
+        statement=r"""
+A rigid body transformation $g(p) = Rp + d$ maps the origin to $(1, 2, 3)$, the point
+$e_1 = (1, 0, 0)$ to $(1, 2, 4)$ and $e_2 = (0, 1, 0)$ to $(1, 1, 3)$. Find $R$
+(Proposition 2: $g$ maps the frame $e_1, e_2, e_3$ to a right-handed orthonormal frame).
+Give a 3x3 array or matrix.
+""",
+        answer=Value(shape=(3, 3), rotation=True),
+        tip="R eᵢ = g(eᵢ) − g(0); the third column follows from the first two.",
+        mistakes={
+            "mirror": "your third column points the wrong way (det R = −1): it is "
+                      "R e₁ × R e₂, in that order.",
+            "points": "subtract g(0) = d first: the columns of R are g(eᵢ) − g(0), not g(eᵢ).",
+        },
+    ),
+]

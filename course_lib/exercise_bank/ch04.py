@@ -1,0 +1,141 @@
+r"""Exercises of chapter 4 (working with rotations: composition, axis and angle, logarithm)."""
+
+from course_lib.exercises._model import Exercise, Expr, Value
+from course_lib.symbolic import alpha, beta
+
+CHAPTER = 4
+SETUP = ("import numpy as np\nimport sympy as sp\n"
+         "from course_lib.exercises import check, alpha, beta")
+
+_R_GIVEN = r"""$R = \frac13\begin{pmatrix} 2 & -1 & 2 \\ 2 & 2 & -1 \\ -1 & 2 & 2
+\end{pmatrix}$"""
+_FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 1, 0)$, $y_{ab} = (-1, 0, 0)$,
+$z_{ab} = (0, 0, 1)$; frame $C$'s axes, written in $B$, are $x_{bc} = (1, 0, 0)$,
+$y_{bc} = (0, 0, 1)$, $z_{bc} = (0, -1, 0)$."""
+
+EXERCISES = [
+    Exercise(
+        name="compose_frames", chapter=4, number=1, level="warm-up",
+        title="Composing two frames",
+        statement=_FRAMES + r"""
+Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
+""",
+        answer=Value(shape=(3, 3), rotation=True),
+        tip="Form R_ab and R_bc from the axes (as columns) and let the subscripts cancel.",
+        mistakes={"order": "the subscripts must cancel: R_ac = R_ab R_bc (the two inner b's "
+                           "meet), not R_bc R_ab."},
+    ),
+    Exercise(
+        name="chain_vector", chapter=4, number=2, level="warm-up",
+        title="A vector through a chain of frames",
+        statement=r"""With the frames of exercise 4.1, a vector has the coordinates
+$v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
+""",
+        answer=Value(shape=(3,)),
+        tip="v_b = R_bc v_c, then v_a = R_ab v_b.",
+        mistakes={
+            "order": "the frames are passed in the wrong order: first C to B (R_bc), then B to "
+                     "A (R_ab).",
+            "inverse": "that goes from A to C; the exercise goes from C to A: v_a = R_ac v_c.",
+        },
+    ),
+    Exercise(
+        name="angle_from_trace", chapter=4, number=3, level="warm-up",
+        title="The angle of a rotation from its trace",
+        statement=r"""
+Check that """ + _R_GIVEN + r""" is a rotation and find its angle $\theta \in [0, \pi]$ from
+$\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
+""",
+        answer=Value(shape=(), angle=True),
+        tip="tr R = 1 + 2 cos θ, so cos θ = (tr R − 1)/2.",
+        mistakes={
+            "cosine": "that is cos θ; the exercise asks for θ itself.",
+            "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
+        },
+    ),
+    Exercise(
+        name="axis_of_rotation", chapter=4, number=4, level="core",
+        title="The axis of a rotation",
+        statement=r"""
+For the same """ + _R_GIVEN + r""", find the unit axis $\omega$ with $R = e^{\hat\omega\theta}$
+and $\theta \in (0, \pi)$, from the skew part $R - R^T = 2\sin\theta\,\hat\omega$.
+Give a 3-vector.
+""",
+        answer=Value(shape=(3,)),
+        tip="Read ω̂ off (R − Rᵀ)/(2 sin θ): ω = (entry (3,2), entry (1,3), entry (2,1)).",
+        mistakes={"unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its "
+                                  "length)."},
+    ),
+    Exercise(
+        name="fixed_vs_body", chapter=4, number=5, level="core",
+        title="Fixed axes and body axes",
+        statement=r"""
+A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
+axis, then by 90° about its **own** (current) $x$ axis, then by 90° about the **world** $x$
+axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
+""",
+        answer=Value(shape=(3, 3), rotation=True),
+        tip="A turn about a world (fixed) axis multiplies from the left, a turn about the "
+            "body's own axis from the right.",
+        mistakes={
+            "all_body": "the last turn is about the world x axis: it multiplies from the left.",
+            "all_world": "the second turn is about the camera's own x axis: it multiplies from "
+                         "the right.",
+        },
+    ),
+    Exercise(
+        name="composed_angle", chapter=4, number=6, level="core",
+        title="The angle of a composed rotation",
+        statement=r"""
+Let $R = R_x(\alpha)\,R_z(\beta)$. Find $\cos\theta$, where $\theta$ is the rotation angle of
+$R$, as an expression in `alpha` and `beta`; then check that $R_z(\beta)R_x(\alpha)$, a
+different rotation, has the same angle.
+""",
+        answer=Expr(shape=(), domain=(alpha, beta)),
+        tip="tr R = 1 + 2 cos θ; only the diagonal entries of the product are needed.",
+        mistakes={
+            "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
+            "sum": "angles add only for rotations about the same axis.",
+        },
+    ),
+    Exercise(
+        name="small_angle", chapter=4, number=7, level="challenge",
+        title="The angle of a tiny rotation",
+        statement=r"""
+A gyroscope reports the rotation over one time step (entries to 10 digits)
+
+```python
+R_small = np.array([[1.0, -6.66666668e-09, -3.33333331e-09],
+                    [6.66666666e-09, 1.0, -6.66666668e-09],
+                    [3.33333336e-09, 6.66666666e-09, 1.0]])
+```
+
+Find its angle $\theta$ **to within $10^{-9}$**. First try $\arccos((\operatorname{tr}R-1)/2)$
+and explain what goes wrong; then use the skew part $R - R^T = 2\sin\theta\,\hat\omega$ and
+`np.arctan2`. Give a number (radians).
+""",
+        answer=Value(shape=(), angle=True),
+        tip="Near θ = 0, cos θ = 1 − θ²/2 is 1 to double precision; sin θ ≈ θ is not lost.",
+        mistakes={"arccos": "arccos of (tr R − 1)/2 loses every digit near θ = 0 (cos θ "
+                            "rounds to 1): use the size of the skew part R − Rᵀ."},
+    ),
+    Exercise(
+        name="half_turn_axis", chapter=4, number=8, level="challenge",
+        title="The axis of a half turn",
+        statement=r"""
+$R = \frac19\begin{pmatrix} -7 & -4 & 4 \\ -4 & -1 & -8 \\ 4 & -8 & -1 \end{pmatrix}$ is a
+half turn ($\theta = \pi$), so $R - R^T = 0$ and the formula of exercise 4.4 fails. Use
+$R = I + 2\hat\omega^2 = 2\omega\omega^T - I$ to find the unit axis $\omega$, with its first
+component positive. Give a 3-vector.
+""",
+        answer=Value(shape=(3,)),
+        tip="(R + I)/2 = ωωᵀ: its diagonal gives ωᵢ², its off-diagonal entries the signs of "
+            "ωᵢωⱼ.",
+        mistakes={
+            "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by "
+                          "ω₁ > 0.",
+            "abs": "the signs of the components are not free: ωᵢωⱼ = (R + I)ᵢⱼ/2 fixes them "
+                   "relative to each other.",
+        },
+    ),
+]

@@ -1,0 +1,164 @@
+r"""Exercises of the course notebooks and the engine that checks them.
+
+The exercises themselves are data, one module per chapter in :mod:`course_lib.exercise_bank`
+(statement, level, points, the kind and form of answer asked for, hints). A notebook shows an
+exercise from the bank and grades a student's answer with :func:`check`::
+
+    answer_hat_fifth = omega.dot(omega)**2 * W    # in the matrix symbol W standing for ω̂
+    result = check("hat_fifth", answer_hat_fifth)
+    assert result.ok, result.message        # the nbgrader test cell fails on a wrong answer
+
+What is checked, and how (details in :mod:`course_lib.exercises._engine`):
+
+- **Only plain objects.** Sympy expressions and matrices, numpy arrays, lists, tuples and
+  numbers, built from the exercise's own symbols and elementary functions. Subclasses and
+  ``floor``, ``Heaviside``, ``Mod``, ``Piecewise``, ``Integral``, ``Abs`` ... are "not allowed
+  here"; an answer too large to check quickly is "too complex to check: simplify it first".
+- **The form.** Where an exercise asks for a form (a matrix expression of degree at most 2 in
+  ``W``; an expression in ``x·x``, ``y·y``, ``x·y`` only; no square root left), a right value in
+  another form gets "right value, but the exercise asks for ...".
+- **The value.** Exactly (the salted digest of the expanded normal form, modulo
+  :math:`\lVert\omega\rVert = 1`), or else at 40 seeded points over the whole domain, within the
+  package's one tolerance ``TOL`` (scaled by the size of the value). Numbers are compared
+  within ``TOL`` through salted digests. There is no tolerance argument.
+
+The expected answers are nowhere in the package: the checker holds fingerprints (values at the
+seeded points, salted digests) made by the repository tool ``tools/exercise_fingerprints.py``
+from the instructor's reference solutions, which stay in the instructor's notebooks.
+
+The symbols of the exercises are those of :mod:`course_lib.symbolic`, re-exported here.
+
+Examples
+--------
+>>> import sympy as sp
+>>> print(check("hat_fifth", W**5))
+✗ hat_fifth: right value, but the exercise asks for a matrix expression in W of degree at most 2, with coefficients in omega_1, omega_2 and omega_3: reduce the higher powers first.
+>>> check("hat_fifth", None).status
+'no answer'
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+
+from .. import exercise_bank
+from ..symbolic import (
+    A, B, R, W, X, Y, a, alpha, beta, d, hat, omega, phi, t, theta, u, x, x_0, xx, xy, y, yy, z,
+)
+from ._check import expected_shape_phrase, judge
+from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value
+from ._reading import Rejected
+
+__all__ = [
+    "EXERCISES", "LEVELS", "CheckResult", "Choice", "Exercise", "Expr", "Value",
+    "check", "exercises", "get", "names",
+    "A", "B", "R", "W", "X", "Y", "a", "alpha", "beta", "d", "hat", "omega", "phi",
+    "t", "theta", "u", "x", "x_0", "xx", "xy", "y", "yy", "z",
+]
+
+@lru_cache(maxsize=1)
+def _registry():
+    """Every exercise of the bank, by name, in chapter order (loaded on first use, so that the
+    bank's modules can import this package's classes without an import cycle)."""
+    return {ex.name: ex for ex in exercise_bank.all_exercises()}
+
+
+def __getattr__(name):
+    if name == "EXERCISES":         # every exercise of the course, by name, in chapter order
+        return _registry()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def get(name):
+    """The exercise called ``name``; KeyError listing the known names otherwise.
+
+    Examples
+    --------
+    >>> get("hat_fifth").label, get("hat_fifth").level, get("hat_fifth").points
+    ('3.3', 'core', 2)
+    """
+    registry = _registry()
+    if not isinstance(name, str) or name not in registry:
+        raise KeyError(f"unknown exercise {name!r}; known exercises: {', '.join(registry)}")
+    return registry[name]
+
+
+def names(chapter=None):
+    """Names of the exercises (of one chapter when ``chapter`` is given), in order."""
+    return [ex.name for ex in exercises(chapter)]
+
+
+def exercises(chapter=None):
+    """The exercises of ``chapter`` (1-4), or all of them, in order.
+
+    Raises
+    ------
+    ValueError
+        If ``chapter`` is not one of the chapters of the bank.
+    """
+    if chapter is None:
+        return list(_registry().values())
+    if chapter not in exercise_bank.CHAPTERS:
+        raise ValueError(f"chapter must be one of {sorted(exercise_bank.CHAPTERS)}, "
+                         f"got {chapter!r}")
+    return [ex for ex in _registry().values() if ex.chapter == chapter]
+
+
+@lru_cache(maxsize=1)
+def _fingerprints():
+    text = resources.files(exercise_bank).joinpath("fingerprints.json").read_text()
+    return json.loads(text)
+
+
+def check(name, answer):
+    r"""Check a student's answer to the exercise ``name``.
+
+    Parameters
+    ----------
+    name : str
+        The exercise's name (see :func:`names`).
+    answer : object
+        A sympy expression, Matrix or matrix expression; a number, list, tuple or numpy
+        array; a set of letters; ``None`` when there is no answer yet.
+
+    Returns
+    -------
+    CheckResult
+        ``ok``, ``status`` and a message beginning with the exercise's name. A wrong or
+        unreadable answer gives ``ok=False`` and a hint that does not reveal the expected
+        answer. Never raises for a bad answer.
+
+    Raises
+    ------
+    KeyError
+        If ``name`` is not an exercise; the message lists the known names.
+
+    Examples
+    --------
+    >>> print(check("hat_fifth", -W))  # doctest: +ELLIPSIS
+    ✗ hat_fifth: your answer is the right one times a factor that changes with the symbols: ...
+    """
+    ex = get(name)
+    try:
+        fp = _fingerprints()[name]
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            status, text = judge(ex, fp, answer)
+    except Rejected as err:
+        status, text = err.status, str(err)
+        if status == "no answer":
+            text = f"no answer yet: assign your answer to `{ex.answer_variable}`."
+    except KeyError:
+        status, text = "malformed", ("this exercise has no stored fingerprint; the instructor "
+                                     "regenerates them with tools/exercise_fingerprints.py.")
+    except Exception as err:  # noqa: BLE001 - a bad answer must never raise from deep inside
+        status, text = "malformed", (f"could not check your answer ({type(err).__name__}); "
+                                     f"give {expected_shape_phrase(ex)} as the exercise asks.")
+    if status == "wrong" and ex.tip:
+        text = f"{text} Hint: {ex.tip}"
+    return CheckResult(status == "correct", f"{name}: {text}", status)

@@ -1,0 +1,175 @@
+r"""What an exercise is: its statement, level, points and the kind of answer it asks for.
+
+The exercise bank (:mod:`course_lib.exercise_bank`) is data built from these classes; the engine
+(:mod:`course_lib.exercises._engine`) checks answers against them. Nothing here holds an expected
+answer: the engine compares with *fingerprints* (values at seeded points, salted digests) that a
+repository tool generates from the instructor's reference solutions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .._verdict import Verdict
+
+__all__ = ["CheckResult", "Choice", "Exercise", "Expr", "LEVELS", "Value"]
+
+#: Levels in rising difficulty and the points an exercise of that level is worth.
+LEVELS = {"warm-up": 1, "core": 2, "challenge": 3}
+
+
+@dataclass(frozen=True, repr=False)
+class CheckResult(Verdict):
+    """The verdict on one answer: ``ok``, the message (exercise name first) and a ``status``.
+
+    ``status`` is one of ``"correct"``, ``"wrong"``, ``"form"`` (right value, asked form not
+    met), ``"malformed"``, ``"not allowed"``, ``"too complex"`` and ``"no answer"``.
+
+    Examples
+    --------
+    >>> r = CheckResult(False, "hat_cubed: your answer is the negative of the right one.", "wrong")
+    >>> print(r)
+    ✗ hat_cubed: your answer is the negative of the right one.
+    >>> bool(r), r.status
+    (False, 'wrong')
+    """
+
+    status: str = "wrong"
+
+    def __repr__(self):
+        return str(self)                   # plain-text front ends show the verdict line
+
+
+@dataclass(frozen=True)
+class Value:
+    """A numeric answer: a number, a 3-vector or a 3x3 matrix, fixed by the statement.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        ``()``, ``(n,)`` or ``(n, m)``.
+    rotation : bool
+        The answer is a rotation matrix: a wrong one is also tested for ``det = -1`` and for
+        columns that are not orthonormal.
+    angle : bool
+        The answer is an angle in radians: a wrong one is also tested for degrees and for the
+        other sign.
+    """
+
+    shape: tuple = ()
+    rotation: bool = False
+    angle: bool = False
+
+
+@dataclass(frozen=True)
+class Expr:
+    r"""A symbolic answer: a sympy expression or matrix in the exercise's symbols.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        ``()``, ``(n,)`` or ``(n, m)``.
+    domain : tuple of sympy.Symbol
+        The symbols the answer is a function of (its values are compared over their whole
+        range, at seeded points).
+    allowed : tuple, optional
+        The symbols (scalar or matrix) the asked *form* may use; default ``domain``. An answer
+        in other symbols of ``domain`` has the right value in the wrong form.
+    unit_omega : bool
+        ω is a unit vector here (points on the unit sphere, exact comparison modulo
+        :math:`\lVert\omega\rVert = 1`).
+    matrix_degree : int or None
+        When set, the answer must be a matrix *expression* in the matrix symbols of
+        ``allowed`` (``W``, ``u``, ``A`` ...) of at most this degree; explicit entries are the
+        wrong form.
+    no_roots : bool
+        The asked form has no square root of an expression in the symbols (simplify first).
+    """
+
+    shape: tuple = ()
+    domain: tuple = ()
+    allowed: tuple = None
+    unit_omega: bool = False
+    matrix_degree: int = None
+    no_roots: bool = False
+
+
+@dataclass(frozen=True)
+class Choice:
+    """A set of letters, e.g. the maps or matrices of a list that have some property."""
+
+    letters: str = "abcdef"
+
+
+@dataclass(frozen=True)
+class Exercise:
+    r"""One exercise of a chapter.
+
+    Parameters
+    ----------
+    name : str
+        Unique identifier; the notebook assigns the answer to ``answer_<name>``.
+    chapter, number : int
+        Chapter (1-4) and position in it; ``label`` is ``"<chapter>.<number>"``.
+    level : {"warm-up", "core", "challenge"}
+        Difficulty; fixes the points (:data:`LEVELS`).
+    title, statement : str
+        Heading and markdown statement (LaTeX between ``$...$``).
+    answer : Value, Expr or Choice
+        What kind of answer is asked for.
+    tip : str
+        A pointer to the notes, added to the message of a wrong answer.
+    mistakes : dict
+        Known mistakes: id -> hint; their fingerprints are stored with the expected ones.
+    properties : tuple
+        ``(residual, message)`` pairs for symbolic answers: ``residual(M)`` (M the answer as an
+        explicit matrix) must vanish; the first that does not gives ``message`` as hint.
+    """
+
+    name: str
+    chapter: int
+    number: int
+    level: str
+    title: str
+    statement: str
+    answer: object
+    tip: str = ""
+    mistakes: dict = field(default_factory=dict)
+    properties: tuple = ()
+
+    def __post_init__(self):
+        if self.level not in LEVELS:
+            raise ValueError(f"level of {self.name} must be one of {list(LEVELS)}, "
+                             f"got {self.level!r}")
+
+    @property
+    def label(self):
+        """``"<chapter>.<number>"``, e.g. ``"3.3"``."""
+        return f"{self.chapter}.{self.number}"
+
+    @property
+    def points(self):
+        """Points of the exercise: 1 warm-up, 2 core, 3 challenge."""
+        return LEVELS[self.level]
+
+    @property
+    def answer_variable(self):
+        """Name of the notebook variable holding the answer: ``answer_<name>``."""
+        return f"answer_{self.name}"
+
+    def heading(self):
+        """``Exercise 3.3 (core, 2 points): title``."""
+        pts = "point" if self.points == 1 else "points"
+        return f"Exercise {self.label} ({self.level}, {self.points} {pts}): {self.title}"
+
+    def markdown(self):
+        """The statement with its heading, as the markdown of the notebook cell."""
+        return (f"### {self.heading()}\n\n{self.statement.strip()}\n\n"
+                f"Assign your answer to `{self.answer_variable}`; the cell after it checks "
+                "the answer and shows ✓, or an error with a hint.")
+
+    def _repr_markdown_(self):
+        return self.markdown()
+
+    def __str__(self):
+        return f"Exercise {self.label} ({self.name}): {self.title}"

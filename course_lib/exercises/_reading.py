@@ -1,0 +1,328 @@
+r"""Reading a student's answer: plain sympy, numpy and Python objects only, bounded in size.
+
+An answer is walked node by node before anything is computed with it. Every node must be of an
+allowed type *exactly* (a subclass, e.g. a sympy class with its own ``__add__``, is refused, and
+none of its methods is ever called); functions that hide a piecewise definition or an
+unevaluated operation (``floor``, ``Heaviside``, ``Mod``, ``Piecewise``, ``Integral``, ``Sum``,
+``Derivative``, ``Abs`` ...) are "not allowed here"; an answer with more than
+:data:`MAX_NODES` nodes, a degree above :data:`MAX_DEGREE` or a matrix power above
+:data:`MAX_MATRIX_DEGREE` is "too complex to check". These bounds are what keeps every check
+well under a second: nothing is expanded or simplified before they hold.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import sympy as sp
+from sympy.core.function import AppliedUndef
+from sympy.matrices.expressions import (
+    Identity, MatAdd, MatMul, MatPow, MatrixExpr, MatrixSymbol, Transpose, ZeroMatrix,
+)
+
+__all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
+
+MAX_NODES = 800
+MAX_DEGREE = 24
+MAX_MATRIX_DEGREE = 6
+MAX_INTEGER = 10**30
+
+_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.asin, sp.acos, sp.atan, sp.atan2,
+              sp.sinh, sp.cosh, sp.tanh)
+_SCALAR_TYPES = {sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Integer, sp.Rational, sp.Float,
+                 *_FUNCTIONS}
+_NUMBER_SINGLETONS = {type(n) for n in (sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.S.Half,
+                                        sp.S.Pi, sp.S.Exp1, sp.S.ImaginaryUnit)}
+_BAD_NUMBERS = {type(n) for n in (sp.S.NaN, sp.S.Infinity, sp.S.NegativeInfinity,
+                                  sp.S.ComplexInfinity)}
+_MATRIX_TYPES = {MatAdd, MatMul, MatPow, Transpose, Identity, ZeroMatrix, MatrixSymbol}
+_EXPLICIT = (sp.ImmutableDenseMatrix, sp.MutableDenseMatrix)
+_NUMPY_INTS = (np.int64, np.int32, np.int16, np.int8)
+_NUMPY_FLOATS = (np.float64, np.float32)
+
+
+class Rejected(Exception):
+    """An answer the checker refuses; ``str`` is the message, ``status`` its kind."""
+
+    def __init__(self, message, status="malformed"):
+        super().__init__(message)
+        self.status = status
+
+
+def _too_complex(what):
+    return Rejected(f"too complex to check: simplify it first ({what}).", "too complex")
+
+
+def _not_allowed(node):
+    kind = type(node)
+    name = getattr(kind, "__name__", str(kind))
+    if isinstance(node, AppliedUndef):
+        return Rejected(f"not allowed here: the undefined function {node} (give an explicit "
+                        "expression).", "not allowed")
+    if (getattr(kind, "__module__", None) or "").split(".")[0] != "sympy":
+        return Rejected(f"not allowed here: your answer contains an object of type {name} "
+                        "(a class of your own); build it from plain sympy objects.",
+                        "not allowed")
+    if isinstance(node, sp.Inverse):
+        why = "the exercise asks for the answer without an inverse"
+    elif isinstance(node, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
+        why = "evaluate it first (.doit()) and simplify the result"
+    else:
+        why = "give an expression built from +, −, ·, powers and elementary functions"
+    return Rejected(f"not allowed here: {name} ({why}).", "not allowed")
+
+
+def _check_node(node, symbols, numeric):
+    """Types are looked at first and exactly: no method of a foreign class is ever called."""
+    kind = type(node)
+    if kind in _BAD_NUMBERS:
+        raise Rejected("your answer contains nan or infinity.")
+    if kind in _NUMBER_SINGLETONS:
+        return
+    if kind in _SCALAR_TYPES or kind in _MATRIX_TYPES or kind in _EXPLICIT:
+        if kind is sp.Symbol or kind is MatrixSymbol:
+            _check_symbol(node, symbols, numeric)
+        elif kind is sp.Integer or kind is sp.Rational:
+            if max(abs(node.p), node.q) > MAX_INTEGER:
+                raise _too_complex(f"a number with more than {len(str(MAX_INTEGER))} digits")
+        elif kind is sp.Float and not abs(float(node)) < 1e300:
+            raise _too_complex("a number too large for double precision")
+        return
+    if numeric and kind is sp.Abs:
+        return
+    raise _not_allowed(node)
+
+
+def _check_symbol(s, symbols, numeric):
+    if numeric:
+        raise Rejected(f"a number is expected here, but your answer contains the symbol {s}.")
+    if s in symbols:
+        return
+    same_name = [k for k in symbols if getattr(k, "name", None) == s.name]
+    if same_name:
+        raise Rejected(f"the symbol {s} in your answer is not the one of the course (made with "
+                       "other assumptions, e.g. without real=True); import it from "
+                       "course_lib.exercises.")
+    names = ", ".join(sorted(str(k) for k in symbols)) or "none"
+    raise Rejected(f"your answer contains the symbol {s}, which does not belong to this "
+                   f"exercise (its symbols: {names}).")
+
+
+def _walk(expr, symbols, numeric):
+    """Check every node of a sympy object; return the number of nodes."""
+    count = 0
+    stack = [expr]
+    while stack:
+        node = stack.pop()
+        count += 1
+        if count > MAX_NODES:
+            raise _too_complex(f"more than {MAX_NODES} terms and factors")
+        _check_node(node, symbols, numeric)
+        if type(node) in _EXPLICIT:
+            stack.extend(node)
+        elif type(node) is not MatrixSymbol:
+            stack.extend(node.args)
+    return count
+
+
+def degree_bound(e, memo=None):
+    """An upper bound of the polynomial degree of ``e`` (arguments of functions count apart).
+
+    Examples
+    --------
+    >>> from course_lib.symbolic import x
+    >>> degree_bound((x[0] + x[1]) ** 3 * x[2])
+    4
+    """
+    memo = {} if memo is None else memo
+    if e in memo:
+        return memo[e]
+    if e.is_Symbol:
+        out = 1
+    elif e.is_Number or not e.args:
+        out = 0
+    elif e.is_Add:
+        out = max(degree_bound(a, memo) for a in e.args)
+    elif e.is_Mul:
+        out = sum(degree_bound(a, memo) for a in e.args)
+    elif e.is_Pow:
+        base, ex = e.args
+        if ex.is_Number:
+            out = int(np.ceil(abs(float(ex)) * degree_bound(base, memo)))
+        else:
+            out = degree_bound(base, memo) + degree_bound(ex, memo) + 1
+    else:                                            # an elementary function: a new atom
+        inner = max(degree_bound(a, memo) for a in e.args)
+        if inner > MAX_DEGREE:
+            raise _too_complex(f"degree above {MAX_DEGREE} inside {type(e).__name__}")
+        out = 1 if inner else 0
+    if out > MAX_DEGREE:
+        raise _too_complex(f"degree above {MAX_DEGREE}")
+    memo[e] = out
+    return out
+
+
+def matrix_degree(e):
+    """Degree of a matrix expression in its matrix symbols (scalar factors count 0)."""
+    kind = type(e)
+    if kind is MatrixSymbol:
+        out = 1
+    elif kind in (Identity, ZeroMatrix) or kind in _EXPLICIT or not isinstance(e, MatrixExpr):
+        out = 0
+    elif kind is MatAdd:
+        out = max(matrix_degree(a) for a in e.args)
+    elif kind is MatMul:
+        out = sum(matrix_degree(a) for a in e.args)
+    elif kind is MatPow:
+        base, ex = e.args
+        if not (ex.is_Integer and ex >= 0):
+            raise Rejected("a matrix power must have a whole exponent ≥ 0 here.", "not allowed")
+        out = int(ex) * matrix_degree(base)
+    else:                                            # Transpose
+        out = matrix_degree(e.args[0])
+    if out > MAX_MATRIX_DEGREE:
+        raise _too_complex(f"matrix power above {MAX_MATRIX_DEGREE}")
+    return out
+
+
+def _scalar(v):
+    kind = type(v)
+    if kind is bool or kind is np.bool_:
+        raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
+    if kind is int or kind in _NUMPY_INTS:
+        return sp.Integer(int(v))
+    if kind is float or kind in _NUMPY_FLOATS:
+        if not np.isfinite(v):
+            raise Rejected("your answer contains nan or infinity.")
+        return sp.Float(float(v))
+    if kind is complex or kind is np.complex128:
+        if v.imag != 0:
+            raise Rejected("your answer is complex; a real answer is expected.")
+        return sp.Float(v.real)
+    if kind is str:
+        raise Rejected("your answer is a string (text), not a string of numbers or "
+                       "expressions: give sympy expressions or numbers, not a string.")
+    if isinstance(v, sp.Basic) and (getattr(kind, "__module__", None) or "")[:6] != "sympy.":
+        raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
+                       "own); give plain numbers or sympy expressions.", "not allowed")
+    if isinstance(v, sp.Basic) and not isinstance(v, (sp.MatrixBase, MatrixExpr)):
+        if not isinstance(v, sp.Expr):
+            raise Rejected(f"your answer is a {type(v).__name__} (an equation or a truth "
+                           "value?), not an expression; for an Eq from dsolve take its .rhs.")
+        return v
+    if (getattr(kind, "__module__", None) or "").split(".")[0] not in ("builtins", "numpy",
+                                                                        "sympy"):
+        raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
+                       "own); give plain numbers or sympy expressions.", "not allowed")
+    raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an "
+                   "expression.")
+
+
+def _rows(answer):
+    """Nested lists / tuples / arrays as a list of rows of sympy scalars."""
+    kind = type(answer)
+    if kind is np.ndarray:
+        if answer.dtype.kind == "b":
+            raise Rejected("your array holds truth values (True/False), not numbers.")
+        if answer.dtype.kind not in "iufcO":
+            raise Rejected(f"could not read an array of dtype {answer.dtype} as numbers.")
+        if answer.ndim > 2 or answer.size > 81:
+            raise Rejected(f"wrong shape: your array has shape {answer.shape}.")
+        answer = answer.tolist()
+        kind = type(answer)
+    if kind not in (list, tuple):
+        return [[_scalar(answer)]], "a scalar"
+    rows = []
+    for r in answer:
+        if type(r) is np.ndarray:
+            r = r.tolist()
+        if type(r) in (list, tuple):
+            rows.append([_scalar(v) for v in r])
+        else:
+            rows.append([_scalar(r)])
+    lengths = {len(r) for r in rows}
+    if len(lengths) > 1:
+        raise Rejected("could not read your answer: its rows have different lengths.")
+    if rows and len(rows[0]) == 1 and len(rows) > 1:
+        return rows, f"a {len(rows)}-vector"
+    return rows, f"a {len(rows)}x{len(rows[0]) if rows else 0} array"
+
+
+def _target(shape):
+    return {0: (1, 1), 1: (shape[0], 1) if shape else (1, 1), 2: shape}[len(shape)]
+
+
+def describe_shape(shape):
+    """``a scalar``, ``a 3-vector`` or ``a 3x3 matrix``."""
+    if shape == ():
+        return "a scalar"
+    if len(shape) == 1:
+        return f"a {shape[0]}-vector"
+    return f"a {shape[0]}x{shape[1]} matrix"
+
+
+def _fit_shape(M, shape, got):
+    rows, cols = _target(shape)
+    if M.shape == (rows, cols):
+        return M
+    if len(shape) == 1 and M.shape == (1, rows):
+        return M.T
+    raise Rejected(f"wrong shape: expected {describe_shape(shape)}, got {got}.")
+
+
+def read_answer(answer, shape, symbols, numeric=False):
+    """A checked answer: ``("explicit", ImmutableMatrix)`` or ``("matrix", MatrixExpr)``.
+
+    Raises :class:`Rejected` with the message for the student.
+    """
+    if answer is None:
+        raise Rejected("no answer yet (the answer variable is still None).", "no answer")
+    kind = type(answer)
+    if isinstance(answer, MatrixExpr) and kind not in _EXPLICIT:
+        if kind not in _MATRIX_TYPES and kind is not sp.MatrixSymbol:
+            raise _not_allowed(answer)
+        _walk(answer, symbols, numeric)
+        matrix_degree(answer)
+        return "matrix", _fit_shape(answer, shape, f"a {answer.shape[0]}x{answer.shape[1]} "
+                                                   "matrix expression")
+    if kind in _EXPLICIT:
+        M, got = sp.ImmutableMatrix(answer), f"a {answer.rows}x{answer.cols} matrix"
+    elif isinstance(answer, sp.MatrixBase) or (isinstance(answer, (list, tuple, np.ndarray))
+                                                and kind not in (list, tuple, np.ndarray)):
+        raise _not_allowed(answer) if isinstance(answer, sp.Basic) else Rejected(
+            f"not allowed here: an object of type {kind.__name__} (a class of your own); "
+            "give a plain list, tuple, numpy array or sympy Matrix.", "not allowed")
+    else:
+        if kind is np.ndarray and answer.ndim == 0:
+            answer = answer.item()
+        rows, got = _rows(answer)
+        M = sp.ImmutableMatrix(rows)
+    _walk(M, symbols, numeric)
+    M = _fit_shape(M, shape, got)
+    memo = {}
+    for e in M:
+        degree_bound(e, memo)
+    return "explicit", M
+
+
+def read_choice(answer, letters):
+    """The letters of a choice answer, as a sorted string (a str, set, list or tuple)."""
+    if answer is None:
+        raise Rejected("no answer yet (the answer variable is still None).", "no answer")
+    kind = type(answer)
+    if kind in (str, set, frozenset, list, tuple) and len(answer) > 4 * len(letters):
+        raise Rejected(f"give at most the {len(letters)} letters {', '.join(letters)}.")
+    if kind is str:
+        items = [c for c in answer if c not in " ,;"]
+    elif kind in (set, frozenset, list, tuple):
+        items = list(answer)
+        if not all(type(c) is str for c in items):
+            raise Rejected("give the letters as strings, e.g. {\"a\", \"c\"}.")
+    else:
+        raise Rejected(f"give a set of letters such as {{\"a\", \"c\"}}, not an object of "
+                       f"type {kind.__name__}.")
+    items = [c.strip().lower() for c in items]
+    bad = sorted(set(c for c in items if c not in letters))
+    if bad:
+        raise Rejected(f"{', '.join(map(repr, bad))} is not one of the letters "
+                       f"{', '.join(letters)}.")
+    return "".join(sorted(set(items)))

@@ -1,0 +1,133 @@
+"""The real nbgrader round trip (nbgrader 0.9.6, pinned in environment.txt).
+
+1. ``nbgrader generate_assignment`` accepts every chapter notebook as it is (no marker word in
+   the prose, balanced markers, unique grade ids) and releases copies without the solutions.
+2. ``nbgrader autograde`` of the exercise sections (the cells tools/sync_exercises.py writes,
+   for chapters 1-4) gives the instructor's notebooks full marks, more than 0, and the released
+   copies 0.
+3. ``nbgrader validate`` fails on a released (blank) copy.
+
+The sections are graded on their own (they import what they need) so the round trip stays
+well under two minutes; strict nbval executes the whole chapters anyway.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from tools import sync_exercises  # noqa: E402
+
+from course_lib.exercises import exercises  # noqa: E402
+
+pytestmark = pytest.mark.notebook_exec
+NBGRADER = Path(sys.executable).with_name("nbgrader")
+CHAPTERS = sorted((ROOT / "notebooks").glob("0[1-9]_*.ipynb"))
+
+
+def run(args, cwd):
+    env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ.get('PATH', '')}"}
+    proc = subprocess.run([str(NBGRADER), *args], cwd=cwd, capture_output=True, text=True,
+                          timeout=300, env=env)          # nbgrader runs `alembic` from PATH
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+@pytest.fixture(scope="module")
+def course(tmp_path_factory):
+    root = tmp_path_factory.mktemp("course")
+    (root / "nbgrader_config.py").write_text(
+        "c = get_config()\n"
+        f"c.CourseDirectory.root = {str(root)!r}\n"
+        "c.CourseDirectory.course_id = 'rotations'\n"
+        "c.ExecutePreprocessor.timeout = 120\n")
+    chapters = root / "source" / "chapters"
+    chapters.mkdir(parents=True)
+    for path in CHAPTERS:
+        shutil.copy(path, chapters / path.name)
+    sections = root / "source" / "exercises"
+    sections.mkdir(parents=True)
+    for chapter in (1, 2, 3, 4):
+        nb = sync_exercises.sync(nbformat.v4.new_notebook(), chapter)
+        nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
+                                     "language": "python"}
+        if chapter == 1:                           # an instructor's hidden test
+            cell = next(c for c in nb.cells if c.id == "coords_by_projection-check")
+            cell.source += ("\n### BEGIN HIDDEN TESTS\n"
+                            "assert check('coords_by_projection', answer_coords_by_projection)\n"
+                            "### END HIDDEN TESTS")
+        nbformat.write(nb, sections / f"{chapter:02d}_exercises.ipynb")
+    return root
+
+
+def test_generate_assignment_accepts_every_chapter_notebook(course):
+    assert len(CHAPTERS) >= 3
+    code, out = run(["generate_assignment", "chapters", "--force", "--create"], course)
+    assert code == 0, out
+    for path in CHAPTERS:
+        released = (course / "release" / "chapters" / path.name).read_text()
+        assert "BEGIN SOLUTION" not in released and "answer_" in released
+        assert "NotImplementedError" in released
+
+
+def _scores(course, student):
+    from nbgrader.api import Gradebook
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        sub = gb.find_submission("exercises", student)
+        return sub.score, sub.max_score
+
+
+@pytest.fixture(scope="module")
+def graded(course):
+    code, out = run(["generate_assignment", "exercises", "--force", "--create"], course)
+    assert code == 0, out
+    for student, src in (("instructor", course / "source"), ("blank", course / "release")):
+        dest = course / "submitted" / student / "exercises"
+        shutil.copytree(src / "exercises", dest)
+        (dest / "timestamp.txt").write_text("2026-01-01 00:00:00.000000 UTC")
+    code, out = run(["autograde", "exercises", "--force", "--create"], course)
+    assert code == 0, out
+    return course
+
+
+def test_released_copies_hold_neither_solutions_nor_hidden_tests(graded):
+    nb = nbformat.read(graded / "release" / "exercises" / "01_exercises.ipynb", as_version=4)
+    text = "\n".join(c.source for c in nb.cells)
+    assert "HIDDEN TESTS" not in text and "BEGIN SOLUTION" not in text
+    check_cell = next(c for c in nb.cells if c.id == "coords_by_projection-check")
+    assert "assert result.ok, result.message" in check_cell.source
+
+
+def test_autograde_gives_the_instructor_full_marks_and_a_blank_copy_zero(graded):
+    total = sum(ex.points for ex in exercises())
+    score, max_score = _scores(graded, "instructor")
+    assert max_score == total > 0
+    assert score == max_score
+    score, max_score = _scores(graded, "blank")
+    assert (score, max_score) == (0, total)
+
+
+def test_autograded_check_cells_show_the_verdict_and_the_hint(graded):
+    nb = json.loads((graded / "autograded" / "blank" / "exercises" /
+                     "03_exercises.ipynb").read_text())
+    checks = [c for c in nb["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade")]
+    assert len(checks) == len(exercises(3))
+    for cell in checks:
+        errors = [o for o in cell["outputs"] if o["output_type"] == "error"]
+        assert errors and errors[0]["ename"] == "AssertionError"
+        assert "no answer yet" in errors[0]["evalue"] or "NameError" in errors[0]["evalue"]
+
+
+def test_validate_fails_on_a_blank_copy_and_passes_the_instructor_copy(graded):
+    blank = graded / "release" / "exercises" / "02_exercises.ipynb"
+    code, out = run(["validate", str(blank)], graded)
+    assert "VALIDATION FAILED" in out or "failed" in out.lower(), out
+    solved = graded / "source" / "exercises" / "02_exercises.ipynb"
+    code, out = run(["validate", str(solved)], graded)
+    assert "Success! Your notebook passes all the tests." in out, out

@@ -1,0 +1,52 @@
+"""Reference solutions of chapter 1 (instructor side; not part of the installed package).
+
+SOLUTIONS: exercise name -> the worked solution, the code between the solution markers of the
+notebook's answer cell. MISTAKES: name -> {mistake id: an expression of the typical wrong
+answer}; tools/exercise_fingerprints.py stores fingerprints of both, never the code.
+"""
+
+SOLUTIONS = {
+    "coords_by_projection": '''\
+s = 1 / np.sqrt(2)
+e1, e2, e3 = np.array([s, s, 0]), np.array([-s, s, 0]), np.array([0, 0, 1])
+p = np.array([1, 3, 2])
+answer_coords_by_projection = [p @ e1, p @ e2, p @ e3]     # projections, eqs (3)-(5)''',
+    "angle_from_lengths": '''\
+# 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
+x_dot_y = sp.Rational(9 + 16 - 13, 2)
+answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))''',
+    "which_are_rigid": '''\
+# (a) and (d) keep distances but flip g(e1) x g(e2); (c) doubles distances
+answer_which_are_rigid = {"b", "e", "f"}''',
+    "unit_tangent": '''\
+p = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])
+velocity = p.diff(t)
+speed = sp.sqrt(sp.trigsimp(velocity.dot(velocity)))      # sqrt(4 + 9)
+answer_unit_tangent = velocity / speed''',
+    "lagrange_identity": '''\
+lhs = sp.expand(x.cross(y).dot(x.cross(y)))
+guess = xx * yy - xy**2
+in_components = guess.subs({xx: x.dot(x), yy: y.dot(y), xy: x.dot(y)})
+assert sp.expand(lhs - in_components) == 0
+answer_lagrange_identity = guess''',
+    "bac_cab": '''\
+lhs = x.cross(y.cross(z))
+alpha_, beta_ = x.dot(z), -x.dot(y)
+assert sp.expand(lhs - (alpha_ * y + beta_ * z)) == sp.zeros(3, 1)
+answer_bac_cab = [alpha_, beta_]''',
+    "motion_from_points": '''\
+g0, g1, g2 = np.array([1, 2, 3]), np.array([1, 2, 4]), np.array([1, 1, 3])
+r1, r2 = g1 - g0, g2 - g0
+answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])''',
+}
+
+MISTAKES = {
+    "coords_by_projection": {"weights": "np.array([[s, -s, 0], [s, s, 0], [0, 0, 1]]) @ p"},
+    "angle_from_lengths": {"cosine": "sp.Rational(1, 2)", "sign": "sp.acos(-sp.Rational(1, 2))"},
+    "which_are_rigid": {"mirrors": '{"a", "b", "d", "e", "f"}', "translation": '{"b", "e"}'},
+    "unit_tangent": {"velocity": "velocity"},
+    "lagrange_identity": {"plus": "xx * yy + xy**2"},
+    "bac_cab": {"swapped": "[beta_, alpha_]"},
+    "motion_from_points": {"mirror": "np.column_stack([r1, r2, -np.cross(r1, r2)])",
+                           "points": "np.column_stack([g1, g2, np.cross(g1, g2)])"},
+}

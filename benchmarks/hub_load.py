@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import asyncio
+import contextlib
 import json
 import os
 import platform
@@ -208,7 +209,7 @@ class Api:
             server = model.get("servers", {}).get("", {})
             if server.get("ready"):
                 break
-            if not server.get("pending") and not server:
+            if not server:
                 raise RuntimeError("the server stopped while starting")
             if time.monotonic() > deadline:
                 raise TimeoutError("the server did not start before the deadline")
@@ -413,15 +414,22 @@ class Sampler(threading.Thread):
     def run(self):
         while not self.stop.is_set():
             self.sample()
-            if not self.ports:
-                self.note_ports()
             self.stop.wait(self.interval)
+
+
+def running(proc):
+    """Alive and still the process we saw (psutil compares the start time: no reused pid)."""
+    try:
+        return proc.is_running() and proc.status() != psutil.STATUS_ZOMBIE
+    except psutil.Error:
+        return False
 
 
 def stop_everything(hub, sampler, ports):
     """Stop the hub (which stops servers and proxy), then any process of ours still alive.
 
-    Returns the problems left (processes alive, ports listening) as lines.
+    Returns the problems left (processes alive, ports listening) as lines, and how many
+    processes were seen.
     """
     if sampler is not None:
         sampler.sample()
@@ -437,22 +445,19 @@ def stop_everything(hub, sampler, ports):
             hub.wait(10)
     hub.log_file.close()
     procs = [p for p, _ in (sampler.seen.values() if sampler else [])]
-    for sig_wait in (("terminate", 10), ("kill", 5)):
-        alive = [p for p in procs if p.is_running() and p.status() != psutil.STATUS_ZOMBIE]
+    for how, wait in (("terminate", 10), ("kill", 5)):
+        alive = [p for p in procs if running(p)]
         for p in alive:
-            try:
-                getattr(p, sig_wait[0])()
-            except psutil.Error:
-                pass
-        psutil.wait_procs(alive, timeout=sig_wait[1])
-    problems = [f"process {p.pid} ({p.name()}) still running" for p in procs
-                if p.is_running() and p.status() != psutil.STATUS_ZOMBIE]
+            with contextlib.suppress(psutil.Error):
+                getattr(p, how)()
+        psutil.wait_procs(alive, timeout=wait)
+    problems = [f"process {p.pid} still running" for p in procs if running(p)]
     for port in sorted(ports):
         with socket.socket() as s:
             s.settimeout(1)
             if s.connect_ex(("127.0.0.1", port)) == 0:
                 problems.append(f"port {port} still listening")
-    return problems, len(procs), ports
+    return problems, len(procs)
 
 
 # --------------------------------------------------------------------------------- report
@@ -609,7 +614,7 @@ def main(argv=None):
         wall = time.monotonic() - start
         problems, nprocs, t_stop = [], 0, time.monotonic()
         if hub is not None:
-            problems, nprocs, _ = stop_everything(hub, sampler, set(ports.values()))
+            problems, nprocs = stop_everything(hub, sampler, set(ports.values()))
         t_stop = time.monotonic() - t_stop
         log_tail = (tmp / "hub.log").read_text(errors="replace").splitlines()[-15:] \
             if (tmp / "hub.log").exists() else []

@@ -54,7 +54,7 @@ $(CHP_STAMP):
 
 hub-load: $(HUB_STAMP) $(CHP_STAMP)
 	$(BIN)/python benchmarks/hub_load.py --students $(STUDENTS) --proxy $(CHP) \
-		--json build/hub-load/students-$(STUDENTS).json
+		--json build/hub-load/students-$(STUDENTS).json --log build/hub-load/hub-$(STUDENTS).log
 
 clean:
 	rm -rf $(VENV) build

@@ -53,7 +53,7 @@ import nbformat
 import psutil
 from jupyter_server.services.kernels.connection.base import deserialize_binary_message
 from tornado.httpclient import AsyncHTTPClient, HTTPRequest
-from tornado.websocket import websocket_connect
+from tornado.websocket import WebSocketClosedError, websocket_connect
 
 ROOT = Path(__file__).resolve().parent.parent
 MAX_STUDENTS = 50
@@ -74,6 +74,7 @@ class NotebookRun:
     notebook: str
     seconds: float = 0.0
     kernel_start: float = 0.0
+    reconnects: int = 0                             # websocket reconnects, as JupyterLab's
     cells: list = field(default_factory=list)       # (cell index, seconds)
     failures: list = field(default_factory=list)    # one line each
 
@@ -239,25 +240,55 @@ def output_text(msg):
 
 
 class Kernel:
-    """One kernel's websocket (JupyterLab's protocol: JSON frames with a channel field)."""
+    """One kernel's websocket (JupyterLab's protocol: JSON frames with a channel field).
 
-    def __init__(self, ws, session):
-        self.ws, self.session = ws, session
+    Like JupyterLab, it reconnects (up to 3 times) when the websocket closes, with the same
+    session id, for which the server buffers the kernel's messages and replays them.
+    """
+
+    def __init__(self, url, token):
+        self.session = uuid.uuid4().hex
+        self.url, self.token = f"{url}?session_id={self.session}", token
+        self.ws, self.reconnects = None, 0
+
+    async def connect(self):
+        self.ws = await websocket_connect(HTTPRequest(
+            self.url, headers={"Authorization": f"token {self.token}"}, request_timeout=120),
+            max_message_size=256 * 1024 * 1024)
+
+    async def reconnect(self):
+        if self.reconnects == 3:
+            raise ConnectionError("the kernel's websocket closed, 3 reconnects failed")
+        self.reconnects += 1
+        await asyncio.sleep(1)
+        await self.connect()
+
+    async def read(self, timeout):
+        while True:
+            raw = await asyncio.wait_for(self.ws.read_message(), timeout)
+            if raw is not None:
+                return json.loads(raw) if isinstance(raw, str) else \
+                    deserialize_binary_message(raw)
+            await self.reconnect()
+
+    async def send(self, text):
+        while True:
+            try:
+                return await self.ws.write_message(text)
+            except WebSocketClosedError:
+                await self.reconnect()
 
     async def request(self, msg_type, content, timeout):
         """Send a shell request; return (reply content, [iopub messages]) once idle."""
         msg_id = uuid.uuid4().hex
-        await self.ws.write_message(json.dumps({
+        await self.send(json.dumps({
             "header": {"msg_id": msg_id, "msg_type": msg_type, "session": self.session,
                        "username": "hub-load", "version": "5.3"},
             "parent_header": {}, "metadata": {}, "content": content, "channel": "shell",
             "buffers": []}))
         reply, iopub, idle = None, [], False
         while reply is None or not idle:
-            raw = await asyncio.wait_for(self.ws.read_message(), timeout)
-            if raw is None:
-                raise ConnectionError("the kernel's websocket closed")
-            msg = json.loads(raw) if isinstance(raw, str) else deserialize_binary_message(raw)
+            msg = await self.read(timeout)
             if msg.get("parent_header", {}).get("msg_id") != msg_id:
                 continue
             if msg["channel"] == "shell":
@@ -267,6 +298,10 @@ class Kernel:
                 idle = (msg["msg_type"] == "status"
                         and msg["content"]["execution_state"] == "idle")
         return reply, iopub
+
+    def close(self):
+        if self.ws is not None:
+            self.ws.close()
 
 
 def cell_failure(index, cell, reply, iopub):
@@ -286,23 +321,20 @@ async def run_notebook(api, student, path, cell_timeout):
     run = NotebookRun(student.name, path.name)
     nb = nbformat.read(path, as_version=4)
     user = f"/user/{student.name}"
-    rel = f"{COURSE_DIR}/notebooks/{path.name}"
-    start = time.monotonic()
-    model = await api.call("POST", f"{user}/api/sessions", token=student.token, body={
-        "path": rel, "name": path.name, "type": "notebook", "kernel": {"name": "python3"}})
-    url = (api.base.replace("http", "ws", 1) + f"{user}/api/kernels/{model['kernel']['id']}"
-           f"/channels?session_id={uuid.uuid4().hex}")
-    ws = await websocket_connect(HTTPRequest(
-        url, headers={"Authorization": f"token {student.token}"}, request_timeout=120),
-        max_message_size=256 * 1024 * 1024)
+    start, where, kernel, model = time.monotonic(), "opening the notebook", None, None
     try:
-        kernel = Kernel(ws, uuid.uuid4().hex)
+        model = await api.call("POST", f"{user}/api/sessions", token=student.token, body={
+            "path": f"{COURSE_DIR}/notebooks/{path.name}", "name": path.name,
+            "type": "notebook", "kernel": {"name": "python3"}})
+        kernel = Kernel(api.base.replace("http", "ws", 1)
+                        + f"{user}/api/kernels/{model['kernel']['id']}/channels", student.token)
+        await kernel.connect()
         await kernel.request("kernel_info_request", {}, 300)
         run.kernel_start = time.monotonic() - start
         for i, cell in enumerate(nb.cells):
             if cell.cell_type != "code":
                 continue
-            t0 = time.monotonic()
+            where, t0 = f"cell {i}", time.monotonic()
             reply, iopub = await kernel.request("execute_request", {
                 "code": cell.source, "silent": False, "store_history": True,
                 "user_expressions": {}, "allow_stdin": False, "stop_on_error": False},
@@ -311,14 +343,25 @@ async def run_notebook(api, student, path, cell_timeout):
             failure = cell_failure(i, cell, reply, iopub)
             if failure:
                 run.failures.append(failure)
+    except Exception as err:  # noqa: BLE001 - this run's failure; the others go on
+        run.failures.append(f"{where}: {type(err).__name__}: {err}"[:200])
     finally:
-        ws.close()
-        try:   # shuts the kernel down, as closing the notebook's tab with "shut down" does
-            await api.call("DELETE", f"{user}/api/sessions/{model['id']}", token=student.token)
-        except (RuntimeError, OSError) as err:
-            run.failures.append(f"closing the session: {err}")
-    run.seconds = time.monotonic() - start
+        if kernel is not None:
+            kernel.close()
+            run.reconnects = kernel.reconnects
+        run.seconds = time.monotonic() - start
+    if model is not None:      # not reached when cancelled: the hub's shutdown ends it then
+        await close_session(api, student, model["id"], run)
     return run
+
+
+async def close_session(api, student, session_id, run):
+    """Shut the kernel down, as closing the notebook's tab with "shut down kernel" does."""
+    try:
+        await api.call("DELETE", f"/user/{student.name}/api/sessions/{session_id}",
+                       token=student.token)
+    except (RuntimeError, OSError) as err:
+        run.failures.append(f"closing the session: {err}")
 
 
 async def run_student(api, student, notebooks, deadline, cell_timeout):
@@ -328,12 +371,7 @@ async def run_student(api, student, notebooks, deadline, cell_timeout):
         student.error = f"server start: {type(err).__name__}: {err}"
         return
     for path in notebooks:
-        try:
-            student.runs.append(await run_notebook(api, student, path, cell_timeout))
-        except Exception as err:  # noqa: BLE001
-            run = NotebookRun(student.name, path.name)
-            run.failures.append(f"{type(err).__name__}: {err}"[:200])
-            student.runs.append(run)
+        student.runs.append(await run_notebook(api, student, path, cell_timeout))
 
 
 async def load(api, hub, students, notebooks, deadline, cell_timeout):
@@ -512,6 +550,7 @@ def report(students, notebooks, sampler, wall, hub_version):
          f"{mb(statistics.median(pss))} / {mb(max(pss))}  (shared pages divided)"),
         ("CPU per student p50 / max",
          f"{statistics.median(cpu):.0f} s / {max(cpu):.0f} s  (all {len(notebooks)} notebooks)"),
+        ("websocket reconnects", f"{sum(r.reconnects for r in runs)}"),
         ("hub peak RSS", mb(sampler.peak.get("hub", 0)) if sampler else "?"),
         ("proxy peak RSS", mb(sampler.peak.get("proxy", 0)) if sampler else "?"),
         ("wall time, all students", f"{wall:.0f} s"),
@@ -546,7 +585,8 @@ def save_json(path, students, sampler):
         "peak_pss": sampler.peak_pss.get(s.name, 0) if sampler else None,
         "cpu_seconds": sampler.cpu_of(s.name) if sampler else None,
         "runs": [{"notebook": r.notebook, "seconds": r.seconds, "kernel_start": r.kernel_start,
-                  "cells": r.cells, "failures": r.failures} for r in s.runs]}
+                  "reconnects": r.reconnects, "cells": r.cells, "failures": r.failures}
+                 for r in s.runs]}
         for s in students],
         "hub_peak_rss": sampler.peak.get("hub") if sampler else None,
         "proxy_peak_rss": sampler.peak.get("proxy") if sampler else None}
@@ -567,6 +607,7 @@ def parse_args(argv):
                         help="seconds for everything, start to clean-up (default 1800)")
     parser.add_argument("--cell-timeout", type=float, default=300)
     parser.add_argument("--json", help="also write every measurement to this file")
+    parser.add_argument("--log", help="keep the hub's log (with the servers') in this file")
     args = parser.parse_args(argv)
     if not 1 <= args.students <= MAX_STUDENTS:
         parser.error(f"--students must be between 1 and {MAX_STUDENTS}, not {args.students}")
@@ -616,8 +657,11 @@ def main(argv=None):
         if hub is not None:
             problems, nprocs = stop_everything(hub, sampler, set(ports.values()))
         t_stop = time.monotonic() - t_stop
-        log_tail = (tmp / "hub.log").read_text(errors="replace").splitlines()[-15:] \
-            if (tmp / "hub.log").exists() else []
+        log = tmp / "hub.log"
+        log_tail = log.read_text(errors="replace").splitlines()[-15:] if log.exists() else []
+        if args.log and log.exists():
+            Path(args.log).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(log, args.log)
         shutil.rmtree(tmp, ignore_errors=True)
     passed, failed = report(students, notebooks, sampler, wall, version("jupyterhub"))
     if args.json:

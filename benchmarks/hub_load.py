@@ -8,7 +8,9 @@ user in a temporary home holding a copy of the notebooks as nbgitpuller would le
 (``~/rotations-course/notebooks``). Through the hub's REST API it creates the users, starts their
 servers and gives each a token; then every student, all at once, opens every chapter notebook
 (``notebooks/*.ipynb``) the way JupyterLab does (a session through the proxy, the kernel's
-websocket, the user's token) and runs it cell by cell.
+websocket, the user's token, a reconnect when the websocket drops) and runs it cell by cell.
+The servers are configured as docs/classroom.md deploys them for students (nbgrader's instructor
+extensions off).
 
 A notebook run fails on an error in any cell, or on a check cell (one whose stored output shows
 ``✓``, that calls ``check(`` or that nbgrader grades) whose output lacks ``✓``. Measured: the wall
@@ -21,9 +23,10 @@ kernels, the proxy and the hub; then the script checks that none of their proces
 nothing listens on their ports, and removes the temporary folder. It prints a table and ends with
 the line ``P passed, F failed`` (notebook runs); the exit status is 1 when anything failed.
 
-Usage::
+Usage (``make hub-load`` installs JupyterHub and the proxy first)::
 
-    python benchmarks/hub_load.py --students 20 --proxy PATH/configurable-http-proxy
+    python benchmarks/hub_load.py --students 20 --proxy PATH/configurable-http-proxy \
+        [--json build/hub-load/students-20.json] [--log build/hub-load/hub-20.log]
 """
 
 from __future__ import annotations

@@ -45,6 +45,7 @@ stderr and exits with status 2.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import copy
 import os
 import re
@@ -284,10 +285,8 @@ def _make_dirs(directory):
 
 def _remove_dirs(created):
     for d in reversed(created):
-        try:
+        with contextlib.suppress(OSError):
             d.rmdir()
-        except OSError:
-            pass
 
 
 def _write_file(path, data):

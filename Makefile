@@ -65,5 +65,28 @@ student: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
 
+# A class on a real JupyterHub (loopback only): STUDENTS users run every chapter notebook at once;
+# prints the table of docs/classroom.md. JupyterHub (benchmarks/hub-requirements.txt) goes into
+# .venv, its proxy from npm into build/node, both on first use.
+.PHONY: hub-load
+STUDENTS    ?= 20
+CHP_VERSION := 5.3.0
+CHP         := build/node/node_modules/.bin/configurable-http-proxy
+CHP_STAMP   := build/node/.installed-$(CHP_VERSION)
+HUB_STAMP   := $(VENV)/.hub-installed
+
+$(HUB_STAMP): $(STAMP) benchmarks/hub-requirements.txt
+	$(BIN)/python -m pip install --quiet -r benchmarks/hub-requirements.txt -c environment.txt
+	touch $(HUB_STAMP)
+
+$(CHP_STAMP):
+	npm install --silent --no-audit --no-fund --prefix build/node \
+		configurable-http-proxy@$(CHP_VERSION)
+	touch $(CHP_STAMP)
+
+hub-load: $(HUB_STAMP) $(CHP_STAMP)
+	$(BIN)/python benchmarks/hub_load.py --students $(STUDENTS) --proxy $(CHP) \
+		--json build/hub-load/students-$(STUDENTS).json --log build/hub-load/hub-$(STUDENTS).log
+
 clean:
 	rm -rf $(VENV) build

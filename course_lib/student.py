@@ -1,4 +1,4 @@
-r"""Student copies of the course notebooks: solutions replaced by stubs, outputs cleared.
+r"""Student copies of the course notebooks: solutions replaced by stubs, nothing else of them kept.
 
 The chapter notebooks hold their solutions between nbgrader markers::
 
@@ -8,48 +8,83 @@ The chapter notebooks hold their solutions between nbgrader markers::
     ### END SOLUTION
 
 in cells whose metadata marks them as nbgrader solution cells
-(``{"nbgrader": {"solution": true, "grade_id": "<unique>", ...}}``). A student copy keeps every
-cell, every id and all metadata, and replaces each marked region by a stub: in a code cell
-``# YOUR CODE HERE`` and ``raise NotImplementedError(...)`` naming the exercise, indented like
-the ``BEGIN`` marker; in a markdown cell the prompt ``YOUR ANSWER HERE``. A solution cell without
-markers is replaced whole, as nbgrader does. All outputs and execution counts are cleared.
+(``{"nbgrader": {"solution": true, "grade_id": "<unique>", ...}}``).
+
+Markers follow nbgrader's own rule exactly (``nbgrader.preprocessors.ClearSolutions``,
+``ClearHiddenTests``, ``ClearMarkScheme``), so the two never disagree: **any line that contains**
+``BEGIN SOLUTION`` opens a region and any line that contains ``END SOLUTION`` closes it, in every
+cell and wherever the words stand in the line (a sentence of prose that names them is a marker
+too). Likewise ``BEGIN HIDDEN TESTS`` / ``END HIDDEN TESTS`` (removed; only in autograder test
+cells, ``"grade": true``) and ``BEGIN MARK SCHEME`` / ``END MARK SCHEME`` (removed; only in
+manually graded task cells, ``"task": true``). A region in a cell without the matching metadata,
+a nested or an unclosed region is refused, as nbgrader refuses it. The one place where this tool
+is stricter: a closing marker outside any region, which nbgrader silently deletes, is refused.
+
+A student copy keeps every cell, every id and the cell metadata. Each solution region becomes a
+stub: in a code cell ``# YOUR CODE HERE`` and ``raise NotImplementedError(...)`` naming the
+exercise, indented like the ``BEGIN`` line; in a markdown or raw cell the prompt
+``YOUR ANSWER HERE``. A solution cell without markers is replaced whole, as nbgrader does.
+Nothing stored by a run is kept: outputs and execution counts are cleared, the output-view and
+timing metadata of cells (``collapsed``, ``scrolled``, ``execution``) and the notebook's widget
+state (``metadata.widgets``) dropped, and an attachment survives only where the student copy of
+its cell still refers to it (so a solution's images go with the solution).
 
 Command line (``make student`` runs it)::
 
     python -m course_lib.student SRC_DIR OUT_DIR [--force]
 
-The sources are only read. Every notebook is processed in memory before anything is written,
-so an error (unbalanced markers, a marked cell without nbgrader metadata, a repeated grade_id,
-an OUT_DIR equal to or inside SRC_DIR, existing files without ``--force``) writes nothing; the
-command then prints one line on stderr and exits with status 2.
+The sources are only read. Every notebook is converted in memory, then all copies are written
+into a temporary folder inside OUT_DIR (on its filesystem) and moved into place, replacing the
+directory entries (never writing through a link), only when every one of them is written. On
+any error (a malformed notebook, OUT_DIR equal to or inside SRC_DIR, an existing file without
+``--force``, a file in OUT_DIR that is a link to a source, a directory in the way, a full disk,
+no permission) nothing is written and nothing is left behind: the command prints one line on
+stderr and exits with status 2.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import copy
+import os
 import re
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 import nbformat
 
 __all__ = ["StudentNotebookError", "make_student_notebooks", "student_notebook", "main"]
 
-BEGIN = re.compile(r"^\s*#+\s*BEGIN SOLUTION\s*$")
-END = re.compile(r"^\s*#+\s*END SOLUTION\s*$")
 CODE_STUB = "# YOUR CODE HERE"
 MARKDOWN_STUB = "YOUR ANSWER HERE"
+# (marker words, the nbgrader metadata flag a cell needs to hold them, nbgrader's name of such
+# cells); in nbgrader's order: solutions are cleared first, then hidden tests, then mark schemes.
+REGIONS = (("SOLUTION", "solution", "solution cells"),
+           ("HIDDEN TESTS", "grade", "autograder test cells"),
+           ("MARK SCHEME", "task", "manually graded task cells"))
+CELL_RUN_STATE = ("collapsed", "scrolled", "execution")
+NOTEBOOK_RUN_STATE = ("widgets", "celltoolbar")
 _ANSWER = re.compile(r"\banswer_([A-Za-z_][A-Za-z0-9_]*)\b")
+_ATTACHMENT = re.compile(r"attachment:([^\s)\"'>]+)")
 
 
 class StudentNotebookError(ValueError):
     """A notebook or a directory that cannot be turned into a student copy (nothing written)."""
 
 
+# --------------------------------------------------------------------------------- one notebook
+
 def _where(nb_name, index, cell):
     cid = cell.get("id")
     return f"{nb_name}: cell {index}" + (f" (id {cid})" if cid else "")
+
+
+def _flag(cell, name):
+    """nbgrader's ``utils.is_solution`` / ``is_grade`` / ``is_task``."""
+    return bool(cell.get("metadata", {}).get("nbgrader", {}).get(name, False))
 
 
 def _exercise_label(cell):
@@ -61,58 +96,65 @@ def _exercise_label(cell):
     return f"exercise {gid!r}" if gid else "this exercise"
 
 
-def _stub_lines(cell, indent):
+def _stub_lines(cell):
     if cell.cell_type == "code":
-        what = _exercise_label(cell)
-        return [f"{indent}{CODE_STUB}",
-                f"{indent}raise NotImplementedError(\"write your solution to {what} here\")"]
-    return [f"{indent}{MARKDOWN_STUB}"]
+        return [CODE_STUB,
+                f"raise NotImplementedError(\"write your solution to {_exercise_label(cell)} "
+                "here\")"]
+    return [MARKDOWN_STUB]
 
 
-def _regions(lines, where):
-    """(begin, end) line indices of the marked regions; StudentNotebookError if unbalanced."""
-    regions, begin = [], None
-    for i, line in enumerate(lines):
-        if BEGIN.match(line):
-            if begin is not None:
-                raise StudentNotebookError(f"{where}: nested BEGIN SOLUTION at line {i + 1} "
-                                           f"(the one at line {begin + 1} is not closed)")
-            begin = i
-        elif END.match(line):
-            if begin is None:
-                raise StudentNotebookError(f"{where}: END SOLUTION without BEGIN SOLUTION at "
-                                           f"line {i + 1}")
-            regions.append((begin, i))
-            begin = None
-    if begin is not None:
-        raise StudentNotebookError(f"{where}: BEGIN SOLUTION at line {begin + 1} without "
-                                   "END SOLUTION")
-    return regions
+def _clear_region(lines, words, stub, where, hint=""):
+    """nbgrader's scan: (lines with every BEGIN..END region replaced by ``stub``, found any)."""
+    begin, end = f"BEGIN {words}", f"END {words}"
+    out, start, found = [], None, False
+    for number, line in enumerate(lines, 1):
+        if begin in line:
+            if start is not None:
+                raise StudentNotebookError(f"{where}: nested {begin} at line {number} "
+                                           f"(the one at line {start} is not closed){hint}")
+            start, found = number, True
+            indent = re.match(r"\s*", line).group(0)
+            out += [indent + s for s in stub]
+        elif end in line:
+            if start is None:
+                raise StudentNotebookError(f"{where}: {end} without {begin} at line {number}"
+                                           f"{hint}")
+            start = None
+        elif start is None:
+            out.append(line)
+    if start is not None:
+        raise StudentNotebookError(f"{where}: {begin} at line {start} without {end}{hint}")
+    return out, found
 
 
-def _stub_cell(cell, where):
-    lines = cell.source.split("\n")
-    regions = _regions(lines, where)
-    meta = cell.get("metadata", {}).get("nbgrader", {})
-    is_solution = bool(meta.get("solution"))
-    if regions and not is_solution:
-        raise StudentNotebookError(f"{where}: has SOLUTION markers but no nbgrader metadata "
-                                   "with \"solution\": true (nbgrader refuses such cells)")
-    if not is_solution:
-        return cell
-    new = copy.deepcopy(cell)
-    if not regions:  # nbgrader replaces a solution cell without markers whole
-        new.source = "\n".join(_stub_lines(cell, ""))
-        return new
-    out, pos = [], 0
-    for begin, end in regions:
-        out += lines[pos:begin]
-        indent = re.match(r"\s*", lines[begin]).group(0)
-        out += _stub_lines(cell, indent)
-        pos = end + 1
-    out += lines[pos:]
-    new.source = "\n".join(out)
-    return new
+def _clear_cell(cell, where):
+    """Turn ``cell`` (a copy) into its student version, in place."""
+    original = cell.source
+    lines = original.split("\n")
+    for words, flag, kind in REGIONS:
+        stub = _stub_lines(cell) if flag == "solution" else []
+        hint = "" if _flag(cell, flag) else (
+            f"; nbgrader, too, takes any line containing 'BEGIN {words}' or 'END {words}' for "
+            f"a marker, even in prose, and allows markers only in {kind} "
+            f"(\"{flag}\": true)")
+        lines, found = _clear_region(lines, words, stub, where, hint)
+        if found and not _flag(cell, flag):
+            raise StudentNotebookError(f"{where}: a line contains 'BEGIN {words}' but the cell "
+                                       f"has no nbgrader metadata with \"{flag}\": true{hint}")
+        if flag == "solution" and _flag(cell, "solution") and not found:
+            lines = _stub_lines(cell)  # nbgrader replaces a solution cell without markers whole
+    cell.source = "\n".join(lines)
+    if cell.source != original and "attachments" in cell:
+        kept = set(_ATTACHMENT.findall(cell.source))
+        cell.attachments = {k: v for k, v in cell.attachments.items() if k in kept}
+        if not cell.attachments:
+            del cell["attachments"]
+    if cell.cell_type == "code":
+        cell.outputs = []
+        cell.execution_count = None
+    for key in CELL_RUN_STATE:
+        cell.get("metadata", {}).pop(key, None)
 
 
 def student_notebook(nb, name="notebook"):
@@ -128,14 +170,17 @@ def student_notebook(nb, name="notebook"):
     Returns
     -------
     nbformat.NotebookNode
-        Marked regions replaced by stubs, outputs and execution counts cleared, all other
-        content (cells, ids, metadata) unchanged.
+        Solution regions replaced by stubs, hidden tests and mark schemes removed (nbgrader's
+        marker rule, see the module docstring), outputs, execution counts, cell run metadata,
+        widget state and no longer referenced attachments dropped; all other content (cells,
+        ids, metadata) unchanged.
 
     Raises
     ------
     StudentNotebookError
-        On unbalanced or nested markers, markers in a cell without nbgrader solution metadata,
-        or a repeated ``grade_id``; the message names the notebook and the cell (index, id).
+        On unbalanced or nested markers, markers in a cell without the matching nbgrader
+        metadata, a repeated ``grade_id`` or a kernel language other than Python; the message
+        names the notebook and the cell (index, id).
 
     Examples
     --------
@@ -148,9 +193,15 @@ def student_notebook(nb, name="notebook"):
     # YOUR CODE HERE
     raise NotImplementedError("write your solution to exercise 'x' here")
     """
-    seen = {}
+    language = nb.get("metadata", {}).get("kernelspec", {}).get("language", "python")
+    if language != "python":
+        raise StudentNotebookError(f"{name}: kernel language {language!r}; the stubs are "
+                                   "Python (language 'python' expected)")
     new = copy.deepcopy(nb)
-    for i, cell in enumerate(nb.cells):
+    for key in NOTEBOOK_RUN_STATE:
+        new.metadata.pop(key, None)
+    seen = {}
+    for i, cell in enumerate(new.cells):
         where = _where(name, i, cell)
         gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
         if gid is not None:
@@ -158,21 +209,143 @@ def student_notebook(nb, name="notebook"):
                 raise StudentNotebookError(f"{where}: grade_id {gid!r} repeats the one of cell "
                                            f"{seen[gid]}")
             seen[gid] = i
-        new_cell = _stub_cell(cell, where)
-        if new_cell.cell_type == "code":
-            new_cell = copy.deepcopy(new_cell) if new_cell is cell else new_cell
-            new_cell.outputs = []
-            new_cell.execution_count = None
-        new.cells[i] = new_cell
+        _clear_cell(cell, where)
     return new
 
+
+# --------------------------------------------------------------------------------- a directory
 
 def _is_relative_to(path, other):
     return path == other or other in path.parents
 
 
+def _inodes(directory):
+    """(device, inode) of every file under ``directory``: what a hard link would share."""
+    found = set()
+    for root, _, files in os.walk(directory):
+        for f in files:
+            st = os.stat(os.path.join(root, f), follow_symlinks=False)
+            found.add((st.st_dev, st.st_ino))
+    return found
+
+
+def _check_target(target, src, src_r, source_inodes, force):
+    """Refuse a target that is a directory, leads into SRC, or exists without ``force``."""
+    if not os.path.lexists(target):
+        return
+    if target.is_dir():
+        raise StudentNotebookError(f"{target} is a directory in the way of the student copy; "
+                                   "move it away or choose another output directory")
+    st = target.stat() if target.exists() else None
+    if _is_relative_to(target.resolve(), src_r) or (
+            st is not None and (st.st_dev, st.st_ino) in source_inodes):
+        raise StudentNotebookError(f"{target} is a link to a file of the source directory {src}; "
+                                   "refusing to replace it (remove it first)")
+    if not force:
+        raise StudentNotebookError(f"{target} exists; use --force to overwrite")
+
+
+def _read_sources(src):
+    sources = sorted(p for p in src.glob("*.ipynb") if p.is_file())
+    if not sources:
+        raise StudentNotebookError(f"no notebooks (*.ipynb) in {src}")
+    notebooks = []
+    for path in sources:
+        try:
+            nb = nbformat.read(path, as_version=nbformat.NO_CONVERT)
+        except Exception as err:  # noqa: BLE001 - reported as one line
+            raise StudentNotebookError(f"{path}: cannot read the notebook: {err}") from None
+        if nb.get("nbformat") != 4:
+            raise StudentNotebookError(f"{path}: nbformat {nb.get('nbformat')} notebooks are "
+                                       "not supported (version 4 expected)")
+        notebooks.append((path, nb))
+    return notebooks
+
+
+def _serialized(nb):
+    text = nbformat.writes(nb)
+    return (text if text.endswith("\n") else text + "\n").encode("utf-8")
+
+
+# --------------------------------------------------------------------------------- all or nothing
+
+def _make_dirs(directory):
+    """Create ``directory`` and its missing parents; return those created, outermost first."""
+    missing = [d for d in [directory, *directory.parents] if not os.path.lexists(d)]
+    created = []
+    try:
+        for d in reversed(missing):
+            d.mkdir()
+            created.append(d)
+    except BaseException:
+        _remove_dirs(created)
+        raise
+    return created
+
+
+def _remove_dirs(created):
+    for d in reversed(created):
+        with contextlib.suppress(OSError):
+            d.rmdir()
+
+
+def _write_file(path, data):
+    with open(path, "xb") as f:
+        f.write(data)
+        f.flush()
+        os.fsync(f.fileno())   # a full disk shows here at the latest, not after the move
+
+
+def _move_into_place(stage, names, out):
+    """Rename the staged files over their targets; on any failure put the old ones back."""
+    old = stage / ".replaced"
+    old.mkdir()
+    done = []    # (target, backup or None, new file in place)
+    try:
+        for name in names:
+            target, backup = out / name, None
+            if os.path.lexists(target):
+                backup = old / name
+                os.rename(target, backup)      # the directory entry moves; its file is untouched
+            done.append([target, backup, False])
+            os.rename(stage / name, target)
+            done[-1][2] = True
+    except BaseException:
+        for target, backup, placed in reversed(done):
+            try:
+                if placed:
+                    os.unlink(target)
+                if backup is not None:
+                    os.rename(backup, target)
+            except OSError:
+                pass     # the old file stays in .replaced; _write_all keeps it and says where
+        raise
+
+
+def _write_all(files, out):
+    """Write ``files`` ({name: bytes}) into ``out``: all of them, or nothing and no trace."""
+    created = _make_dirs(out)
+    stage = None
+    try:
+        stage = Path(tempfile.mkdtemp(prefix=".student-copies-", dir=out))
+        for name, data in files.items():
+            _write_file(stage / name, data)
+        _move_into_place(stage, list(files), out)
+    except BaseException as err:
+        kept = stage / ".replaced" if stage is not None else None
+        if kept is not None and kept.is_dir() and any(kept.iterdir()):
+            raise StudentNotebookError(f"cannot write the student copies to {out} ({err!r}) and "
+                                       f"could not put the previous files back; they are in "
+                                       f"{kept}") from None
+        if stage is not None:
+            shutil.rmtree(stage, ignore_errors=True)
+        _remove_dirs(created)
+        raise
+    shutil.rmtree(stage, ignore_errors=True)
+
+
 def make_student_notebooks(src_dir, out_dir, force=False):
-    r"""Write a student copy of every notebook of ``src_dir`` into ``out_dir``.
+    r"""Write a student copy of every notebook of ``src_dir`` into ``out_dir``, all or nothing.
 
     Parameters
     ----------
@@ -181,7 +354,8 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     out_dir : str or pathlib.Path
         Where the copies go (created if needed); must not be ``src_dir`` or inside it.
     force : bool, default False
-        Overwrite existing files in ``out_dir``.
+        Replace existing files in ``out_dir`` (the directory entry is replaced; a file it was a
+        link to is never written).
 
     Returns
     -------
@@ -192,8 +366,9 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     ------
     StudentNotebookError
         If ``src_dir`` is missing or holds no notebook, ``out_dir`` is ``src_dir`` or inside it
-        (after resolving symlinks), a copy would overwrite a file without ``force``, or a
-        notebook is malformed (see :func:`student_notebook`). Nothing is written then.
+        (after resolving symlinks), a copy would replace a file without ``force``, a directory
+        or a link to a source file, a notebook is malformed (see :func:`student_notebook`), or
+        writing fails (full disk, permissions). Nothing is written then.
 
     Examples
     --------
@@ -209,40 +384,21 @@ def make_student_notebooks(src_dir, out_dir, force=False):
         raise StudentNotebookError(f"output directory {out} {what} {src}; choose one outside it")
     if not src.is_dir():
         raise StudentNotebookError(f"source directory {src} does not exist")
-    if out.exists() and not out.is_dir():
+    if os.path.lexists(out) and not out.is_dir():
         raise StudentNotebookError(f"output path {out} exists and is not a directory")
-    sources = sorted(p for p in src.glob("*.ipynb")
-                     if p.is_file() and ".ipynb_checkpoints" not in p.parts)
-    if not sources:
-        raise StudentNotebookError(f"no notebooks (*.ipynb) in {src}")
-
-    copies = []
-    for path in sources:
-        try:
-            nb = nbformat.read(path, as_version=nbformat.NO_CONVERT)
-        except Exception as err:  # noqa: BLE001 - reported as one line
-            raise StudentNotebookError(f"{path}: cannot read the notebook: {err}") from None
-        if nb.get("nbformat") != 4:
-            raise StudentNotebookError(f"{path}: nbformat {nb.get('nbformat')} notebooks are "
-                                       "not supported (version 4 expected)")
-        copies.append((out / path.name, student_notebook(nb, str(path))))
-
-    for target, _ in copies:
-        if target.is_symlink() or target.exists():
-            if _is_relative_to(target.resolve(), src_r):
-                raise StudentNotebookError(f"{target} points into the source directory {src}; "
-                                           "refusing to write through it")
-            if not force:
-                raise StudentNotebookError(f"{target} exists; use --force to overwrite")
-
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for target, nb in copies:
-        if target.is_symlink():
-            target.unlink()
-        nbformat.write(nb, target)
-        written.append(target)
-    return written
+    files = {path.name: _serialized(student_notebook(nb, str(path)))
+             for path, nb in _read_sources(src)}
+    try:
+        source_inodes = _inodes(src)
+        for name in files:
+            _check_target(out / name, src, src_r, source_inodes, force)
+        _write_all(files, out)
+    except OSError as err:
+        what = err.strerror or type(err).__name__
+        where = f" ({err.filename})" if err.filename else ""
+        raise StudentNotebookError(f"cannot write the student copies to {out}: {what}{where}; "
+                                   "nothing was written") from None
+    return [out / name for name in files]
 
 
 def main(argv=None):
@@ -250,15 +406,18 @@ def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="python -m course_lib.student",
         description="Write student copies of the notebooks of SRC_DIR into OUT_DIR: solutions "
-                    "replaced by stubs, outputs cleared.")
+                    "replaced by stubs, outputs cleared; all of them or nothing.")
     parser.add_argument("src_dir", metavar="SRC_DIR")
     parser.add_argument("out_dir", metavar="OUT_DIR")
-    parser.add_argument("--force", action="store_true", help="overwrite existing files")
+    parser.add_argument("--force", action="store_true", help="replace existing files")
     args = parser.parse_args(argv)
     try:
         written = make_student_notebooks(args.src_dir, args.out_dir, force=args.force)
     except StudentNotebookError as err:
         print(f"course_lib.student: error: {err}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("course_lib.student: error: interrupted; nothing was written", file=sys.stderr)
         return 2
     print(f"wrote {len(written)} student notebook(s) to {args.out_dir}")
     return 0

@@ -200,8 +200,8 @@ def test_scaled_rotations_are_never_closed(seed, c):
 def test_display_of_a_pass():
     result = check_group(**real_addition(n=3))
     assert isinstance(result, GroupCheck) and bool(result) is True
-    assert str(result) == result.message
-    assert result.message.startswith("✓ (ℝ, +) passes all four group axioms on 3 sample elements, 9 pairs, 27 triples")
+    assert str(result) == "✓ " + result.message
+    assert result.message.startswith("(ℝ, +) passes all four group axioms on 3 sample elements, 9 pairs, 27 triples")
     assert "never prove" in result.message
     assert result._repr_markdown_().startswith("**✓")
     assert repr(result) == "GroupCheck(name='(ℝ, +)', ok=True, failed_axioms=[], n_failures=0)"
@@ -210,7 +210,7 @@ def test_display_of_a_pass():
 def test_display_of_a_failure():
     result = check_group(**so3_addition(n=2))
     assert bool(result) is False
-    head = result.message.splitlines()[0]
+    head = str(result).splitlines()[0]
     assert head == "✗ (SO(3), +) is not a group: fails 1 (closure), 2 (identity), 3 (inverse) on 2 sample elements, 4 pairs, 8 triples."
     assert "- axiom 1 (closure), 4 failures, e.g. g1 ∘ g2 = [[2., 0., 0.], [0., 2., 0.], [0., 0., 2.]] (det = 8)" in result.message
     md = result._repr_markdown_()

@@ -197,8 +197,8 @@ def test_tolerance_is_absolute_TOL_by_default_and_can_be_passed():
 
 def test_display_of_a_pass():
     result = check_rigid(rotation_map(R_Z90), n=12)
-    assert str(result) == result.message
-    assert result.message.startswith("✓ g is a rigid body transformation on these 12 sample pairs")
+    assert str(result) == "✓ " + result.message
+    assert result.message.startswith("g is a rigid body transformation on these 12 sample pairs")
     assert "never prove" in result.message
     assert result._repr_markdown_().startswith("**✓")
     assert repr(result) == "RigidCheck(ok=True, condition=None, n_pairs=12, mismatch=None)"
@@ -301,7 +301,7 @@ def test_map_builders_refuse_bad_input():
         rotation_map(np.diag([1.0, 1.0, -1.0]))
     with pytest.raises(ValueError, match="one 3x3 rotation"):
         rotation_map(so3.random_rotations(2, seed=0))
-    with pytest.raises(ValueError, match=r"normal must be nonzero: ‖normal‖ = 0\.0e\+00"):
+    with pytest.raises(ValueError, match=r"normal must be non-zero to define a direction: ‖normal‖ = 0\.0e\+00 ≤ TOL"):
         reflection_map([0, 0, 0])
     with pytest.raises(ValueError, match="normal must be one 3-vector"):
         reflection_map(np.eye(3))

@@ -160,18 +160,24 @@ def as_vector3(x, name="w"):
 
 
 def vector_norm(v):
-    """‖v‖ along the last axis without overflow or underflow (scaled by the largest entry)."""
+    """‖v‖ along the last axis without overflow or underflow (scaled by the largest entry).
+
+    Infinite where an entry is infinite, or where the norm itself exceeds 1.8e308.
+    """
+    v = np.asarray(v)
     if v.shape[-1] == 0:
         return np.zeros(v.shape[:-1])
     big = np.max(np.abs(v), axis=-1, keepdims=True)
-    safe = np.where(big > 0, big, 1.0)
-    return big[..., 0] * np.sqrt(np.sum((v / safe) ** 2, axis=-1))
+    safe = np.where((big > 0) & (big < np.inf), big, 1.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        norm = big[..., 0] * np.sqrt(np.sum((v / safe) ** 2, axis=-1))
+    return np.where(big[..., 0] == np.inf, np.inf, norm)
 
 
 def frobenius_norm(M):
     """‖M‖_F over the last two axes, without overflow or underflow."""
     M = np.asarray(M)
-    return vector_norm(M.reshape(M.shape[:-2] + (-1,)))
+    return vector_norm(M.reshape(M.shape[:-2] + (M.shape[-2] * M.shape[-1],)))
 
 
 def as_direction(x, name="axis", tol=TOL):
@@ -275,7 +281,9 @@ def broadcast_batch(*named):
 
 def fmt_vector(v, digits=4):
     """A short, platform-stable text form of a vector or scalar (rounded, no negative zeros)."""
-    arr = np.round(np.asarray(v, dtype=np.float64), digits) + 0.0
+    arr = np.asarray(v, dtype=np.float64)
+    with np.errstate(over="ignore", invalid="ignore"):  # rounding 1e305 to 4 digits overflows
+        arr = np.where(np.abs(arr) < 1e290, np.round(arr, digits), arr) + 0.0
     if arr.ndim == 0:
         return f"{float(arr):.{digits}g}"
     return np.array2string(arr, separator=", ", precision=digits, suppress_small=True)

@@ -15,6 +15,7 @@ Every check compares a residual norm with the one tolerance of the package,
 :data:`course_lib.tolerance.TOL`.
 """
 
+import math
 
 import numpy as np
 
@@ -61,6 +62,35 @@ def _handedness_residual(frame):
     return np.where(np.isnan(residual), np.inf, residual)
 
 
+def _orthonormality_problems(e, names, tol):
+    """(size, text) for each property of eqs. (1)-(2) the columns e break, largest first."""
+    problems = []
+    for i in range(3):
+        length = float(vector_norm(e[i]))
+        off = abs(length - 1.0)
+        problems.append(
+            (
+                off * (length + 1.0),  # |‖e‖² − 1|, without squaring a huge length
+                f"{names[i]} is not a unit vector: ‖{names[i]}‖ = {length:.6g} "
+                f"(|‖{names[i]}‖ − 1| = {fmt_residual(off, tol)}); divide it by its length",
+            )
+        )
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        with np.errstate(over="ignore", invalid="ignore"):
+            dot = float(e[i] @ e[j])
+        dot = dot if math.isfinite(dot) else math.inf
+        shown = f"{dot:.1e}" if math.isfinite(dot) else "beyond ±1.8e308 (overflow)"
+        problems.append(
+            (
+                abs(dot) * math.sqrt(2.0),  # inf when the dot product overflowed
+                f"{names[i]} and {names[j]} are not orthogonal: {names[i]} · {names[j]} = "
+                f"{shown}; make them perpendicular (e.g. Gram-Schmidt)",
+            )
+        )
+    problems.sort(key=lambda item: -item[0])
+    return [text for size, text in problems if size > tol] or [problems[0][1]]
+
+
 def _diagnose(frame, tol, names=_BASIS_NAMES):
     """Explain why one (3, 3) frame is not orthonormal and right-handed, or return None."""
     label = tol_label(tol)
@@ -69,44 +99,25 @@ def _diagnose(frame, tol, names=_BASIS_NAMES):
     if residual > tol:
         # The decision uses the Frobenius residual (as is_orthonormal does); the details name the
         # individual properties of eqs. (1)-(2) that contribute to it, largest first.
-        problems = []
-        for i in range(3):
-            length = float(np.linalg.norm(e[i]))
-            problems.append(
-                (
-                    abs(length**2 - 1.0),
-                    f"{names[i]} is not a unit vector: ‖{names[i]}‖ = {length:.6g} "
-                    f"(|‖{names[i]}‖ − 1| = {abs(length - 1.0):.1e}); divide it by its length",
-                )
-            )
-        for i, j in ((0, 1), (0, 2), (1, 2)):
-            dot = float(e[i] @ e[j])
-            problems.append(
-                (
-                    abs(dot) * np.sqrt(2.0),
-                    f"{names[i]} and {names[j]} are not orthogonal: {names[i]} · {names[j]} = {dot:.1e}; "
-                    f"make them perpendicular (e.g. Gram-Schmidt)",
-                )
-            )
-        problems.sort(key=lambda item: -item[0])
-        shown = [text for size, text in problems if size > tol] or [problems[0][1]]
         return (
             f"the frame is not orthonormal: ‖FᵀF − I‖ = {fmt_residual(residual, tol)} > {label} "
-            f"(F = [{' '.join(names)}] as columns). " + "; ".join(shown) + "."
+            f"(F = [{' '.join(names)}] as columns). "
+            + "; ".join(_orthonormality_problems(e, names, tol))
+            + "."
         )
     handed = float(_handedness_residual(frame))
     if handed > tol:
-        flipped = float(np.linalg.norm(np.cross(e[0], e[1]) + e[2]))
+        a, b, c = names
+        flipped = float(vector_norm(np.cross(e[0], e[1]) + e[2]))
         if flipped <= handed:
             return (
-                f"the frame is left-handed: {names[0]} × {names[1]} = −{names[2]} "
-                f"(‖{names[0]} × {names[1]} − {names[2]}‖ = {fmt_residual(handed, tol)} > {label}); "
-                f"negate one basis vector (e.g. use −{names[2]}) or swap two of them to make it right-handed."
+                f"the frame is left-handed: {a} × {b} = −{c} (‖{a} × {b} − {c}‖ = "
+                f"{fmt_residual(handed, tol)} > {label}); negate one basis vector (e.g. use −{c}) "
+                f"or swap two of them to make it right-handed."
             )
         return (
-            f"the frame is not right-handed: ‖{names[0]} × {names[1]} − {names[2]}‖ = "
-            f"{fmt_residual(handed, tol)} > {label}; "
-            f"the third basis vector must be the cross product of the first two."
+            f"the frame is not right-handed: ‖{a} × {b} − {c}‖ = {fmt_residual(handed, tol)} > "
+            f"{label}; the third basis vector must be the cross product of the first two."
         )
     return None
 

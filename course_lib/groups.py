@@ -134,8 +134,9 @@ def _fmt_member(x):
     except (TypeError, ValueError, OverflowError):
         return text
     if arr.ndim == 2 and arr.shape[0] == arr.shape[1] and np.all(np.isfinite(arr)):
-        with np.errstate(over="ignore", invalid="ignore"):
-            text += f" (det = {float(np.linalg.det(arr)):.6g})"
+        with np.errstate(all="ignore"):
+            det = float(np.linalg.det(arr))
+        text += f" (det = {det:.6g})" if math.isfinite(det) else ""
     return text
 
 

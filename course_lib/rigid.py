@@ -369,6 +369,19 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     return _rigid_verdict(p1, p2, _measure(p1, p2, image), tol)
 
 
+def _image(p, f, what):
+    """f(p) for the maps built here: a ValueError, not inf, if the image overflows float64."""
+    p = as_vectors(p, "p")
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = f(p)
+    if not np.isfinite(out).all():
+        raise ValueError(
+            f"{what} overflows float64: p is too far from the origin (a coordinate of the image "
+            f"would exceed 1.8e308)"
+        )
+    return out
+
+
 def rotation_map(R):
     r"""The map :math:`p \mapsto R p` of a rotation matrix, for use with :func:`check_rigid`.
 
@@ -403,7 +416,7 @@ def rotation_map(R):
     R = R.copy()
 
     def g(p):
-        return as_vectors(p, "p") @ R.T
+        return _image(p, lambda q: q @ R.T, "R p")
 
     g.__name__ = "rotation_map"
     g.__doc__ = "p ↦ R p for R =\n" + np.array2string(R, precision=4)
@@ -444,7 +457,7 @@ def reflection_map(normal):
     M = np.eye(3) - 2.0 * np.outer(n, n)
 
     def g(p):
-        return as_vectors(p, "p") @ M.T
+        return _image(p, lambda q: q @ M.T, "the mirror image of p")
 
     g.__name__ = "reflection_map"
     g.__doc__ = f"p ↦ (I − 2nnᵀ) p for n = {fmt_vector(n)}"
@@ -484,7 +497,7 @@ def translation_map(d):
     d = as_vector3(d, "d").copy()
 
     def g(p):
-        return as_vectors(p, "p") + d
+        return _image(p, lambda q: q + d, "p + d")
 
     g.__name__ = "translation_map"
     g.__doc__ = f"p ↦ p + d for d = {fmt_vector(d)}"

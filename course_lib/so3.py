@@ -181,7 +181,8 @@ def vee(W, tol=TOL):
     W = as_matrices(W, "W")
     tol = check_tol(tol)
     half = 0.5 * W  # ‖W + Wᵀ‖ would overflow for entries near 1e308: measure half of it
-    sym = 2.0 * frobenius_norm(half + np.swapaxes(half, -1, -2))
+    with np.errstate(over="ignore"):  # beyond 1.8e308 it is inf, and fails
+        sym = 2.0 * frobenius_norm(half + np.swapaxes(half, -1, -2))
     if not np.all(sym <= tol):
         worst = np.unravel_index(np.argmax(sym), sym.shape) if sym.ndim else ()
         raise ValueError(
@@ -198,8 +199,9 @@ def _skew_vector(W):
     pairs = ((2, 1, 1, 2), (0, 2, 2, 0), (1, 0, 0, 1))
     with np.errstate(over="ignore"):
         v = 0.5 * np.stack([W[..., i, j] - W[..., k, m] for i, j, k, m in pairs], axis=-1)
-    if not np.isfinite(v).all():  # the difference overflowed: halve first (exact at that size)
-        v = np.stack([0.5 * W[..., i, j] - 0.5 * W[..., k, m] for i, j, k, m in pairs], axis=-1)
+    if not np.isfinite(v).all():  # a difference overflowed: halve first (exact at that size)
+        halved = np.stack([0.5 * W[..., i, j] - 0.5 * W[..., k, m] for i, j, k, m in pairs], -1)
+        v = np.where(np.isfinite(v), v, halved)
     return v
 
 
@@ -262,12 +264,13 @@ def _exp_rotvec(r):
     n = flat.shape[0]
     out = np.empty((n, 9))
     buf = np.empty((9, min(n, _CHUNK)))
-    for start in range(0, n, _CHUNK):
-        stop = min(start + _CHUNK, n)
-        rows = flat[start:stop].T
-        b = buf[:, : stop - start]
-        _exp_rows(rows[0], rows[1], rows[2], b)
-        out[start:stop] = b.T
+    with np.errstate(over="ignore"):  # θ² may overflow: _exp_rows then takes the scaled path
+        for start in range(0, n, _CHUNK):
+            stop = min(start + _CHUNK, n)
+            rows = flat[start:stop].T
+            b = buf[:, : stop - start]
+            _exp_rows(rows[0], rows[1], rows[2], b)
+            out[start:stop] = b.T
     return out.reshape(batch + (3, 3))
 
 
@@ -400,8 +403,15 @@ def _rotation_error(R, index, tol, name):
     where = f" (at batch index {index})" if len(index) else ""
     if not np.all(np.isfinite(M)):
         return ValueError(f"{name} contains NaN or infinity{where}; expected a finite 3x3 matrix")
-    orth = float(np.linalg.norm(M.T @ M - np.eye(3)))
-    det = float(np.linalg.det(M))
+    with np.errstate(all="ignore"):  # entries near 1e308: inf, no warning
+        orth = float(frobenius_norm(M.T @ M - np.eye(3)))
+        det = float(np.linalg.det(M))
+    if not (math.isfinite(det) and math.isfinite(orth)):
+        return ValueError(
+            f"{name} is not a rotation: its entries are so large{where} (up to "
+            f"{np.abs(M).max():.3g}) that {name}ᵀ{name} overflows float64; a rotation has "
+            f"entries in [−1, 1]"
+        )
     if det < 0 and abs(det + 1.0) <= tol and orth <= tol:
         return ValueError(
             f"{name} is a reflection, not a rotation: det({name}) = {det:.6g}{where}; a rotation "
@@ -409,13 +419,13 @@ def _rotation_error(R, index, tol, name):
         )
     if orth > tol:
         return ValueError(
-            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {orth:.1e} > {tol_label(tol)}"
+            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {fmt_residual(orth, tol)} > {tol_label(tol)}"
             f"{where} (det = {det:.6g}); its columns are not orthonormal. If it is a rotation "
             f"with rounded entries, re-orthonormalise it (e.g. U Vᵀ from its SVD) or pass a "
             f"larger tol"
         )
     return ValueError(
-        f"{name} is not a rotation: det({name}) = {det:.6g}, |det − 1| = {abs(det - 1):.1e} > "
+        f"{name} is not a rotation: det({name}) = {det:.6g}, |det − 1| = {fmt_residual(abs(det - 1), tol)} > "
         f"{tol_label(tol)}{where}; a rotation has det = +1"
     )
 

@@ -6,7 +6,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.course-installed
 
-.PHONY: lab test e2e student bench clean
+.PHONY: lab test e2e student bench lint clean
 
 $(STAMP): environment.txt pyproject.toml
 	rm -rf $(VENV)
@@ -30,8 +30,16 @@ e2e: $(STAMP)
 student: $(STAMP)
 	$(BIN)/python -m course_lib.student notebooks build/student --force
 
+# Speed against the reference (scipy) and of the exercise checks: CPU time, best of N, printed.
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
+	$(BIN)/python benchmarks/bench_exercises.py
+
+# Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources.
+LINT_PATHS := course_lib tests benchmarks e2e tools
+lint: $(STAMP)
+	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
+	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))
 
 clean:
 	rm -rf $(VENV) build

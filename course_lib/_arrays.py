@@ -45,8 +45,7 @@ _F64 = np.dtype(np.float64)
 
 def _overflow(name):
     return ValueError(
-        f"{name} has an entry too large for a float64 (|x| > 1.8e308); expected finite real "
-        f"numbers"
+        f"{name} has an entry too large for a float64 (|x| > 1.8e308); expected finite real numbers"
     )
 
 
@@ -267,7 +266,8 @@ def broadcast_batch(*named):
     >>> broadcast_batch(("p", np.zeros((2, 3)), 1), ("frame", np.zeros((5, 3, 3)), 2))
     Traceback (most recent call last):
     ...
-    ValueError: the batches do not broadcast: p has shape (2, 3) (batch (2,)), frame has shape (5, 3, 3) (batch (5,))
+    ValueError: the batches do not broadcast: p has shape (2, 3) (batch (2,)),
+    frame has shape (5, 3, 3) (batch (5,))
     """
     batches = [np.shape(a)[: np.ndim(a) - core] for _, a, core in named]
     try:

@@ -1,4 +1,5 @@
-r"""Reference frames and rotation matrices (notes §0.1.1 "Reference Frames", §0.1.2 "Rotation Matrices").
+r"""Reference frames and rotation matrices (notes §0.1.1 "Reference Frames", §0.1.2 "Rotation
+Matrices").
 
 A frame is stored as a 3x3 matrix whose COLUMNS are its basis vectors,
 
@@ -244,7 +245,8 @@ def check_frame(frame, tol=TOL):
     >>> check_frame(np.diag([1.0, 1.0, -1.0]))
     Traceback (most recent call last):
         ...
-    ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09); negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
+    ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09);
+    negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
     """
     tol = check_tol(tol)
     frame = as_matrices(frame, "frame")
@@ -309,7 +311,8 @@ def coordinates(p, frame, origin=(0, 0, 0)):
     origin :math:`o` to the point (eqs. 3-5):
 
     .. math:: p_x = (p - o) \cdot e_1, \quad p_y = (p - o) \cdot e_2, \quad p_z = (p - o) \cdot e_3,
-              \qquad\text{i.e.}\quad \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} (p - o),
+              \qquad\text{i.e.}\quad
+              \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} (p - o),
 
     so that :math:`p = o + p_x e_1 + p_y e_2 + p_z e_3`. The notes' eqs. 3-5 project
     :math:`p` itself, which is the case :math:`o = 0` (the default): right only when the frame's

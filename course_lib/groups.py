@@ -25,7 +25,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import so3
-from ._arrays import as_count, as_scalar, fmt_vector
+from ._arrays import as_count, fmt_vector
 from ._verdict import Verdict
 from .tolerance import TOL, check_tol, tol_label
 
@@ -108,7 +108,9 @@ def _default_equal(tol):
         if a.shape != b.shape:
             return False
         with np.errstate(over="ignore", invalid="ignore"):
-            scale = max(1.0, float(np.max(np.abs(a), initial=0.0)), float(np.max(np.abs(b), initial=0.0)))
+            scale = max(
+                1.0, float(np.max(np.abs(a), initial=0.0)), float(np.max(np.abs(b), initial=0.0))
+            )
             return bool(np.linalg.norm((a - b) / scale) <= tol)
 
     return equal
@@ -239,7 +241,8 @@ def check_group(
     With :math:`S \subset G` the sample and :math:`\mathrm{member}` the test of :math:`x \in G`:
 
     1. closure: :math:`\mathrm{member}(g_1 \circ g_2)` for pairs :math:`g_1, g_2 \in S`;
-    2. identity: :math:`\mathrm{member}(e)` and :math:`e \circ g = g \circ e = g` for :math:`g \in S`;
+    2. identity: :math:`\mathrm{member}(e)` and :math:`e \circ g = g \circ e = g`
+       for :math:`g \in S`;
     3. inverse: :math:`\mathrm{member}(g^{-1})` and :math:`g \circ g^{-1} = g^{-1} \circ g = e`;
     4. associativity: :math:`g_1 \circ (g_2 \circ g_3) = (g_1 \circ g_2) \circ g_3` on triples.
 
@@ -321,7 +324,9 @@ def _closure(G, pairs):
         a, b = G.elements[i], G.elements[j]
         c = G.op(a, b)
         if not G.member(c):
-            failures.append(Failure("closure", (a, b), f"g1 ∘ g2 = {_fmt_member(c)} is not in the set"))
+            failures.append(
+                Failure("closure", (a, b), f"g1 ∘ g2 = {_fmt_member(c)} is not in the set")
+            )
     return failures
 
 
@@ -330,7 +335,9 @@ def _identity(G):
     e = G.identity
     failures = []
     if not G.member(e):
-        failures.append(Failure("identity", (e,), f"the identity e = {_fmt_member(e)} is not in the set"))
+        failures.append(
+            Failure("identity", (e,), f"the identity e = {_fmt_member(e)} is not in the set")
+        )
     for g in G.elements:
         sides = (("e ∘ g", G.op(e, g)), ("g ∘ e", G.op(g, e)))
         bad = [(side, v) for side, v in sides if not G.equal(v, g)]
@@ -353,7 +360,9 @@ def _inverse(G):
         if not G.equal(right, G.identity):
             problems.append(f"g⁻¹ ∘ g = {_fmt(right)} ≠ e")
         if problems:
-            failures.append(Failure("inverse", (g, gi), f"for g = {_fmt(g)}: " + "; ".join(problems)))
+            failures.append(
+                Failure("inverse", (g, gi), f"for g = {_fmt(g)}: " + "; ".join(problems))
+            )
     return failures
 
 

@@ -146,14 +146,22 @@ def _evaluate(g, X, tol):
         rows = [single_out, _call(g, X[1])[1]]
         try:
             agree = np.allclose(
-                np.asarray(batch_out, dtype=np.float64), np.asarray(rows, dtype=np.float64), rtol=0, atol=tol
+                np.asarray(batch_out, dtype=np.float64),
+                np.asarray(rows, dtype=np.float64),
+                rtol=0,
+                atol=tol,
             )
         except (TypeError, ValueError):
             agree = False
         batched = bool(agree)
     if not (batched or per_point):
+
         def outcome(shape, out):
-            return f"raised {type(out).__name__}: {out}" if shape is None else f"returned shape {shape}"
+            return (
+                f"raised {type(out).__name__}: {out}"
+                if shape is None
+                else f"returned shape {shape}"
+            )
 
         got_batched, got_single = outcome(batch_shape, batch_out), outcome(single_shape, single_out)
         cause = single_out if single_shape is None else (batch_out if batch_shape is None else None)
@@ -187,7 +195,9 @@ def _pairs(points, n, seed):
     pts = as_vectors(points, "points")
     if pts.ndim == 2:
         if pts.shape[0] < 2:
-            raise ValueError(f"points must hold at least 2 points to form a pair, got shape {pts.shape}")
+            raise ValueError(
+                f"points must hold at least 2 points to form a pair, got shape {pts.shape}"
+            )
         i, j = np.nonzero(~np.eye(pts.shape[0], dtype=bool))
         return pts[i], pts[j]
     if pts.ndim == 3 and pts.shape[1] == 2 and pts.shape[0] >= 1:
@@ -267,7 +277,8 @@ def _rigid_verdict(p1, p2, measured, tol):
             ok=True,
             message=(
                 f"g is a rigid body transformation on these {k} sample {plural}: both conditions "
-                f"of Definition 1 hold within {label} (a sample can refute rigidity, never prove it)."
+                f"of Definition 1 hold within {label} (a sample can refute rigidity, never prove "
+                f"it)."
             ),
             n_pairs=k,
         )
@@ -282,9 +293,7 @@ def _rigid_verdict(p1, p2, measured, tol):
         f"g fails {_CONDITIONS[condition]}: {detail} for p1 = {fmt_vector(c.p1)}, "
         f"p2 = {fmt_vector(c.p2)}{also}; checked {k} sample {plural}."
     )
-    return RigidCheck(
-        ok=False, message=message, condition=condition, counterexample=c, n_pairs=k
-    )
+    return RigidCheck(ok=False, message=message, condition=condition, counterexample=c, n_pairs=k)
 
 
 def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
@@ -356,7 +365,9 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     >>> result.ok, result.condition
     (False, 'cross product')
     >>> print(result)
-    ✗ g fails condition 2 (relative orientation between vectors): g(p1)×g(p2) = [0., 0., 1.], g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.], p2 = [0., 1., 0.]; checked 6 sample pairs.
+    ✗ g fails condition 2 (relative orientation between vectors): g(p1)×g(p2) = [0., 0., 1.],
+    g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.],
+    p2 = [0., 1., 0.]; checked 6 sample pairs.
     """
     if not callable(g):
         raise TypeError(
@@ -426,7 +437,8 @@ def rotation_map(R):
 def reflection_map(normal):
     r"""The mirror across the plane through the origin with the given normal.
 
-    .. math:: g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
+    .. math::
+        g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
 
     It preserves lengths (condition 1) but reverses the relative orientation between vectors,
     so it fails condition 2 of Definition 1: with ``normal = (0, 0, 1)`` it is the notes'
@@ -552,7 +564,9 @@ def vector_map(g):
     (False, True)
     """
     if not callable(g):
-        raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
+        raise TypeError(
+            f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}"
+        )
 
     def g_star(v):
         v = as_vectors(v, "v")

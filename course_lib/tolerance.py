@@ -64,7 +64,9 @@ def check_tol(tol):
         value, tol = math.inf, "an integer beyond 1.8e308"
     if not math.isfinite(value) or value < 0:
         shown = tol if isinstance(tol, str) else repr(value)
-        raise ValueError(f"tol must be a finite number >= 0 (default {tol_label(TOL)}), got {shown}")
+        raise ValueError(
+            f"tol must be a finite number >= 0 (default {tol_label(TOL)}), got {shown}"
+        )
     return value
 
 

@@ -33,8 +33,17 @@ unit_axis = (
     .filter(lambda v: np.linalg.norm(v) > 0.1)
     .map(lambda v: v / np.linalg.norm(v))
 )
-REAL_DTYPES = [np.float16, np.float32, np.float64, np.longdouble, np.int8, np.int32, np.int64,
-               np.uint8, np.uint16]
+REAL_DTYPES = [
+    np.float16,
+    np.float32,
+    np.float64,
+    np.longdouble,
+    np.int8,
+    np.int32,
+    np.int64,
+    np.uint8,
+    np.uint16,
+]
 
 
 def _layouts(x):
@@ -106,8 +115,15 @@ def test_exp_with_theta_is_a_rotation_for_every_finite_angle(axis, theta):
 @given(matrix3)
 def test_matrix_functions_give_finite_values_or_clear_errors(M):
     assert so3.is_rotation(M) in (True, False)
-    for fn in (so3.log, so3.axis_angle, so3.check_rotation, so3.vee, frames.check_frame,
-               frames.is_orthonormal, frames.is_right_handed):
+    for fn in (
+        so3.log,
+        so3.axis_angle,
+        so3.check_rotation,
+        so3.vee,
+        frames.check_frame,
+        frames.is_orthonormal,
+        frames.is_right_handed,
+    ):
         _finite_or_clear_error(fn, M)
     _finite_or_clear_error(so3.angle_between, M, np.eye(3))
     _finite_or_clear_error(so3.exp_series, M, 8)
@@ -128,8 +144,11 @@ def test_rigid_maps_give_finite_values_or_clear_errors(n, p):
     if reflect is not None:
         image = _finite_or_clear_error(reflect, p)
         if image is not None:  # a mirror keeps the length
-            assert np.isclose(np.linalg.norm(image / max(1.0, np.abs(p).max())),
-                              np.linalg.norm(p / max(1.0, np.abs(p).max())), rtol=1e-12)
+            assert np.isclose(
+                np.linalg.norm(image / max(1.0, np.abs(p).max())),
+                np.linalg.norm(p / max(1.0, np.abs(p).max())),
+                rtol=1e-12,
+            )
     shift = rigid.translation_map(n)
     _finite_or_clear_error(shift, p)
 
@@ -156,8 +175,13 @@ def test_check_rigid_points_that_overflow_are_refused_or_checked(a, b):
 
 @given(st.lists(st.floats(-1e300, 1e300, allow_nan=False), min_size=1, max_size=4))
 def test_real_addition_on_large_reals_is_judged_without_nan(values):
-    result = groups.check_group(values, op=operator.add, identity=0.0, inverse=operator.neg,
-                                member=lambda x: math.isfinite(x))
+    result = groups.check_group(
+        values,
+        op=operator.add,
+        identity=0.0,
+        inverse=operator.neg,
+        member=lambda x: math.isfinite(x),
+    )
     assert "nan" not in str(result)
     if not result.ok:  # float addition may overflow, and then closure (only) fails
         assert {f.axiom for f in result.failures} <= {"closure", "associativity"}
@@ -165,8 +189,13 @@ def test_real_addition_on_large_reals_is_judged_without_nan(values):
 
 @given(st.integers(min_value=2**1024, max_value=2**1100))
 def test_python_ints_beyond_float64_are_value_errors(big):
-    for fn, arg in ((so3.hat, [big, 0, 0]), (so3.exp, [0, big, 0]), (so3.rot_z, big),
-                    (rigid.translation_map, [0, 0, big]), (as_scalar, big)):
+    for fn, arg in (
+        (so3.hat, [big, 0, 0]),
+        (so3.exp, [0, big, 0]),
+        (so3.rot_z, big),
+        (rigid.translation_map, [0, 0, big]),
+        (as_scalar, big),
+    ):
         with pytest.raises(ValueError, match="too large for a float64"):
             fn(arg) if fn is not as_scalar else fn(arg, "x")
     with pytest.raises(ValueError, match="tol must be a finite number"):
@@ -195,8 +224,12 @@ def test_layouts_give_the_same_answer_and_leave_the_input_untouched(w):
     for layout, M in _layouts(R).items():
         assert np.array_equal(so3.log(M), so3.log(R)), layout
         # matmul may sum in another order for another layout: equal to rounding
-        np.testing.assert_allclose(frames.coordinates(w, M[0]), frames.coordinates(w, R[0]),
-                                   rtol=0, atol=1e-15 * max(1.0, np.abs(w).max()))
+        np.testing.assert_allclose(
+            frames.coordinates(w, M[0]),
+            frames.coordinates(w, R[0]),
+            rtol=0,
+            atol=1e-15 * max(1.0, np.abs(w).max()),
+        )
         assert np.array_equal(so3.is_rotation(M), so3.is_rotation(R)), layout
 
 
@@ -225,8 +258,15 @@ def test_broadcast_zero_stride_views_are_read_not_written():
 
 @pytest.mark.parametrize(
     "fn",
-    [so3.hat, so3.exp, lambda w: so3.exp(w, 0.3), rigid.translation_map, rigid.reflection_map,
-     lambda w: frames.coordinates(w, np.eye(3)), lambda w: frames.change_frame(np.eye(3), w)],
+    [
+        so3.hat,
+        so3.exp,
+        lambda w: so3.exp(w, 0.3),
+        rigid.translation_map,
+        rigid.reflection_map,
+        lambda w: frames.coordinates(w, np.eye(3)),
+        lambda w: frames.change_frame(np.eye(3), w),
+    ],
 )
 def test_masked_entries_are_refused_naming_the_argument(fn):
     w = np.ma.masked_array([1.0, 0.0, 0.0], mask=[False, True, False])
@@ -260,13 +300,24 @@ def test_empty_batches_give_empty_results():
     "call, names",
     [
         (lambda: so3.exp(np.tile([0.0, 0.0, 1.0], (2, 1)), np.zeros(3)), ["w", "theta"]),
-        (lambda: so3.angle_between(so3.random_rotations(2, seed=0), so3.random_rotations(3, seed=0)),
-         ["R1", "R2"]),
-        (lambda: frames.coordinates(np.zeros((2, 3)), np.eye(3), np.zeros((3, 3))), ["p", "origin"]),
-        (lambda: frames.change_frame(so3.random_rotations(2, seed=0), np.zeros((5, 3))),
-         ["R_ab", "v_b"]),
-        (lambda: frames.frame_from_vectors(np.zeros((2, 3)), np.zeros((4, 3)), [0, 0, 1]),
-         ["e1", "e2"]),
+        (
+            lambda: so3.angle_between(
+                so3.random_rotations(2, seed=0), so3.random_rotations(3, seed=0)
+            ),
+            ["R1", "R2"],
+        ),
+        (
+            lambda: frames.coordinates(np.zeros((2, 3)), np.eye(3), np.zeros((3, 3))),
+            ["p", "origin"],
+        ),
+        (
+            lambda: frames.change_frame(so3.random_rotations(2, seed=0), np.zeros((5, 3))),
+            ["R_ab", "v_b"],
+        ),
+        (
+            lambda: frames.frame_from_vectors(np.zeros((2, 3)), np.zeros((4, 3)), [0, 0, 1]),
+            ["e1", "e2"],
+        ),
     ],
 )
 def test_mismatched_batches_name_the_arguments_and_shapes(call, names):
@@ -287,16 +338,26 @@ def test_batches_that_do_broadcast_are_broadcast():
 
 
 def test_validation_helpers_name_the_argument_and_the_property():
-    with pytest.raises(ValueError, match=r"v must be one 3-vector of shape \(3,\), got shape \(2, 3\)"):
+    with pytest.raises(
+        ValueError, match=r"v must be one 3-vector of shape \(3,\), got shape \(2, 3\)"
+    ):
         as_vector3(np.zeros((2, 3)), "v")
-    with pytest.raises(ValueError, match=r"axis must be non-zero to define a direction: ‖axis‖ = 0"):
+    with pytest.raises(
+        ValueError, match=r"axis must be non-zero to define a direction: ‖axis‖ = 0"
+    ):
         as_direction([0, 0, 0], "axis")
-    np.testing.assert_allclose(as_direction([1e160, 1e160, 0], "n"), [2**-0.5, 2**-0.5, 0], atol=2e-16)
-    with pytest.raises(ValueError, match=r"u must be a unit vector: ‖u‖ = 2, .* at batch index \(1,\)"):
+    np.testing.assert_allclose(
+        as_direction([1e160, 1e160, 0], "n"), [2**-0.5, 2**-0.5, 0], atol=2e-16
+    )
+    with pytest.raises(
+        ValueError, match=r"u must be a unit vector: ‖u‖ = 2, .* at batch index \(1,\)"
+    ):
         as_unit_axes([[1, 0, 0], [2, 0, 0]], "u")
     with pytest.raises(TypeError, match="c must be a real number, got bool"):
         as_scalar(True, "c")
-    with pytest.raises(ValueError, match=r"c must be a single number, got an array of shape \(2,\)"):
+    with pytest.raises(
+        ValueError, match=r"c must be a single number, got an array of shape \(2,\)"
+    ):
         as_scalar([1, 2], "c")
 
 
@@ -319,7 +380,9 @@ def test_exp_of_a_unit_axis_and_angle_2e154_is_a_rotation_not_nan():
 
 def test_vee_of_hat_of_1e308_is_1e308_not_inf():
     np.testing.assert_array_equal(so3.vee(so3.hat([1e308, 0, 0])), [1e308, 0, 0])
-    np.testing.assert_array_equal(so3.vee(so3.hat([[-1.7e308, 1e308, 5e-324]])), [[-1.7e308, 1e308, 5e-324]])
+    np.testing.assert_array_equal(
+        so3.vee(so3.hat([[-1.7e308, 1e308, 5e-324]])), [[-1.7e308, 1e308, 5e-324]]
+    )
 
 
 def test_reflection_map_of_a_huge_normal_is_a_mirror_not_the_identity():
@@ -366,7 +429,9 @@ def test_check_tol_of_10_to_the_400_is_a_value_error_not_an_overflow_error():
 
 
 def test_mismatched_exp_batches_name_w_and_theta_not_operands():
-    with pytest.raises(ValueError, match=r"w has shape \(2, 3\) \(batch \(2,\)\), theta has shape \(3,\)"):
+    with pytest.raises(
+        ValueError, match=r"w has shape \(2, 3\) \(batch \(2,\)\), theta has shape \(3,\)"
+    ):
         so3.exp(np.tile([1.0, 0, 0], (2, 1)), [0.1, 0.2, 0.3])
 
 

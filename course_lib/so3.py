@@ -532,19 +532,8 @@ def _log_one(X, tol, want_axis):
     """log (or axis, angle) of one matrix given as its 9 entries, Python floats; None if it is
     not a rotation within tol (the batch path then raises the ValueError). Same formulas as
     _residual_rows and _log_rows."""
+    orth2, det = _residual_rows(X)  # plain arithmetic: the same code on 9 floats
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
-    g00 = r00 * r00 + r10 * r10 + r20 * r20 - 1.0
-    g11 = r01 * r01 + r11 * r11 + r21 * r21 - 1.0
-    g22 = r02 * r02 + r12 * r12 + r22 * r22 - 1.0
-    g01 = r00 * r01 + r10 * r11 + r20 * r21
-    g02 = r00 * r02 + r10 * r12 + r20 * r22
-    g12 = r01 * r02 + r11 * r12 + r21 * r22
-    orth2 = g00 * g00 + g11 * g11 + g22 * g22 + 2.0 * (g01 * g01 + g02 * g02 + g12 * g12)
-    det = (
-        r00 * (r11 * r22 - r21 * r12)
-        - r10 * (r01 * r22 - r21 * r02)
-        + r20 * (r01 * r12 - r11 * r02)
-    )
     if not (orth2 <= tol * tol and abs(det - 1.0) <= tol):  # NaN fails here too
         return None
     c = 0.5 * (r00 + r11 + r22 - 1.0)

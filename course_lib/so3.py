@@ -313,9 +313,11 @@ def _exp_single(w, theta, tol):
     if xyz is None:
         return None
     x, y, z = xyz
+    if type(tol) is not float or not 0.0 <= tol < 1.0:
+        return None
     if theta is None:
         return _exp_one(x, y, z)
-    if type(theta) not in _NUMBER or type(tol) is not float or not 0.0 <= tol < 1.0:
+    if type(theta) not in _NUMBER:
         return None
     theta = float(theta) if -1e300 < theta < 1e300 else None
     if theta is None or not abs(math.hypot(x, y, z) - 1.0) <= tol:
@@ -369,16 +371,22 @@ def exp(w, theta=None, tol=TOL):
     >>> np.allclose(exp([0, 0, np.pi / 2]), R)
     True
     """
-    if theta is None and type(w) is np.ndarray and w.shape == (3,) and w.dtype is _F64:
+    if (
+        theta is None
+        and tol is TOL
+        and type(w) is np.ndarray
+        and w.shape == (3,)
+        and w.dtype is _F64
+    ):
         x, y, z = w.tolist()  # the common single call, inlined: validation is the next line
         if x - x == 0.0 and y - y == 0.0 and z - z == 0.0:
             return _exp_one(x, y, z)
     R = _exp_single(w, theta, tol)
     if R is not None:
         return R
+    tol = check_tol(tol)
     if theta is None:
         return _exp_rotvec(as_vectors(w, "w"))
-    tol = check_tol(tol)
     w = as_unit_axes(
         w, "w", tol, "normalise the axis, w / ‖w‖, or pass the rotation vector w·theta alone"
     )

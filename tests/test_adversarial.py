@@ -484,6 +484,8 @@ def test_exp_takes_tol_like_its_siblings():
     np.testing.assert_allclose(so3.exp(w, 0.5, tol=1e-6), so3.rot_x(0.5), atol=1e-15)
     with pytest.raises(ValueError, match=r"> tol = 1e-08"):
         so3.exp([[1.0 + 1e-7, 0.0, 0.0]], [0.5], tol=1e-8)
+    with pytest.raises(ValueError, match="tol must be a finite number >= 0"):
+        so3.exp([0.1, 0.2, 0.3], tol=-1.0)  # checked even when no axis needs it
 
 
 @settings(max_examples=50)

@@ -248,7 +248,9 @@ def check_group(
 
     All pairs and triples are used when there are at most ``max_samples`` of them, otherwise a
     seeded random sample of that many. Equality defaults to the tolerance policy,
-    :math:`\|a - b\| \le \mathrm{tol}` (Frobenius for matrices, Euclidean for vectors).
+    :math:`\|a - b\| \le \mathrm{tol} \cdot \max(1, |a|_\infty, |b|_\infty)` (Frobenius for
+    matrices, Euclidean for vectors; the scale only matters for entries beyond 1, where
+    rounding grows with the size).
     Uniqueness of the inverse (in the notes' axiom 3) is not tested separately: it follows
     from axioms 2-4. A sample can refute the axioms, never prove them (the proofs are the
     notes' example for :math:`(\mathbb{R}, +)` and Proposition 5 for SO(3)).
@@ -264,7 +266,7 @@ def check_group(
     inverse : callable
         ``inverse(g)`` = the candidate :math:`g^{-1}`.
     equal : callable, optional
-        ``equal(a, b) -> bool``; default: ``‖a − b‖ ≤ tol``.
+        ``equal(a, b) -> bool``; default: ``‖a − b‖ ≤ tol`` (times the largest entry if > 1).
     tol : float, optional
         Tolerance of the default ``equal``, default :data:`~course_lib.tolerance.TOL`.
     member : callable, optional

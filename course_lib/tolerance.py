@@ -15,6 +15,14 @@ carry errors of order 1e-10. Both pass; a matrix that is wrong in the third digi
 reflection, fails by many orders of magnitude. Functions that accept a ``tol`` argument use
 ``TOL`` as its default, so a lab that needs a looser check passes ``tol=`` explicitly rather
 than changing the policy.
+
+Two checks compare sizes that can be far from 1 and scale the tolerance with them beyond unit
+size, because rounding does: :func:`course_lib.rigid.check_rigid` (tol × ‖p₁ − p₂‖ and
+tol × ‖p₁‖‖p₂‖) and the default equality of :func:`course_lib.groups.check_group` (tol × the
+largest entry). For inputs of unit size both are the plain ``TOL``.
+
+Messages name the tolerance with :func:`tol_label` and print residuals with
+:func:`fmt_residual`, which never shows a failing residual as equal to the tolerance.
 """
 
 import math

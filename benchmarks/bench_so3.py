@@ -10,7 +10,7 @@ is printed too.
 """
 
 import numpy as np
-from _timing import best_times
+from _timing import CLOCK_NAME, best_times
 from scipy.spatial.transform import Rotation
 
 from course_lib import so3
@@ -85,7 +85,7 @@ def _cells(ours, ref, unit, scale):
 def print_table(single, batch):
     print(
         f"so3 vs scipy.spatial.transform.Rotation; best of {SINGLE_REPEATS} rounds (single) "
-        f"and {BATCH_REPEATS} (batch), interleaved"
+        f"and {BATCH_REPEATS} (batch), interleaved; {CLOCK_NAME}"
     )
     head = f"{'course_lib':>10} {'scipy':>10} {'ratio':>6} {'target':>8}"
     print(f"{'':4} | {'one call (validated)':^37} | {f'{N:,} inputs':^37}")

@@ -6,7 +6,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.course-installed
 
-.PHONY: lab test e2e student bench clean test-fast notebooks site site-test
+.PHONY: lab test e2e student bench lint clean test-fast notebooks site site-test
 
 $(STAMP): environment.txt pyproject.toml
 	rm -rf $(VENV)
@@ -62,8 +62,16 @@ e2e: $(STAMP)
 student: $(STAMP)
 	$(BIN)/python -m course_lib.student notebooks build/student --force
 
+# Speed against the reference (scipy) and of the exercise checks: CPU time, best of N, printed.
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
+	$(BIN)/python benchmarks/bench_exercises.py
+
+# Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources.
+LINT_PATHS := course_lib tests benchmarks e2e tools
+lint: $(STAMP)
+	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
+	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))
 
 # A class on a real JupyterHub (loopback only): STUDENTS users run every chapter notebook at once;
 # prints the table of docs/classroom.md. JupyterHub (benchmarks/hub-requirements.txt) goes into

@@ -1,41 +1,113 @@
-"""Input conversion shared by the numeric modules: array-likes in, float64 arrays out.
+"""The one validation layer of course_lib: array-likes in, checked float64 arrays out.
 
 Every public numeric function of course_lib starts by calling one of these, so a student who
-passes a string, a ragged list, a matrix of the wrong size or a NaN gets the same kind of
-message everywhere: what was wrong, and what was expected.
+passes a string, a ragged list, a masked array, a matrix of the wrong size, a number too large
+for float64 or a NaN gets the same kind of message everywhere: the argument's name, what was
+wrong and what was expected.
+
+==========================  ===================================================================
+helper                      returns
+==========================  ===================================================================
+:func:`as_float_array`      any shape, float64 (no finiteness check)
+:func:`as_scalar`           one finite real number, as a Python float
+:func:`as_vector3`          one finite 3-vector, shape (3,)
+:func:`as_vectors`          finite 3-vectors, shape (..., 3)
+:func:`as_direction`        one non-zero 3-vector, normalised (overflow-safe)
+:func:`as_unit_axes`        unit 3-vectors within ``tol``, shape (..., 3)
+:func:`as_matrices`         finite n x n matrices, shape (..., n, n)
+:func:`as_square_matrices`  finite square matrices of any size, shape (..., n, n)
+:func:`as_angles`           finite angles of any shape
+:func:`as_count`            a Python int >= a minimum
+:func:`broadcast_batch`     the common batch shape of several arguments, or a ValueError
+                            naming each argument and its shape
+==========================  ===================================================================
+
+Examples
+--------
+>>> as_vector3([1, 2, 3], "w")
+array([1., 2., 3.])
+>>> as_direction([0, 0, 1e200], "axis")
+array([0., 0., 1.])
+>>> as_vector3([1, 2], "w")
+Traceback (most recent call last):
+...
+ValueError: w must be one 3-vector of shape (3,), got shape (2,)
 """
 
 import numbers
 
 import numpy as np
 
+from .tolerance import TOL, check_tol, fmt_residual, tol_label
+
+_F64 = np.dtype(np.float64)
+
+
+def _overflow(name):
+    return ValueError(
+        f"{name} has an entry too large for a float64 (|x| > 1.8e308); expected finite real numbers"
+    )
+
+
+def _from_masked(x, name):
+    """The data of a masked array with nothing masked; a ValueError if anything is masked."""
+    hidden = int(np.ma.count_masked(x))
+    if hidden:
+        raise ValueError(
+            f"{name} is a masked array with {hidden} masked entr{'y' if hidden == 1 else 'ies'}; "
+            f"course_lib does not guess the hidden values: pass {name}.filled(value) or drop them"
+        )
+    return np.ma.getdata(x)
+
+
+def _from_objects(arr, name):
+    """float64 from an object array whose entries must all be real numbers."""
+    entries = arr.ravel()
+    if not all(isinstance(v, numbers.Real) for v in entries):
+        kinds = sorted({type(v).__name__ for v in entries})
+        raise TypeError(f"{name} must be an array of real numbers, got entries of type {kinds}")
+    try:
+        return arr.astype(np.float64)
+    except OverflowError:  # Python ints beyond 1.8e308
+        raise _overflow(name) from None
+
 
 def as_float_array(x, name):
     """Convert an array-like of real numbers to a float64 array, refusing anything else.
 
-    Raises TypeError for non-numeric input (strings, None, objects, complex numbers) and
-    ValueError for ragged nesting.
+    Never writes into ``x``; the result may share memory with it (read-only arrays are fine).
+
+    Raises
+    ------
+    TypeError
+        For non-numeric input (strings, None, objects, complex numbers).
+    ValueError
+        For ragged nesting, masked entries, or numbers too large for float64.
     """
+    if type(x) is np.ndarray and x.dtype is _F64:
+        return x
     if isinstance(x, (str, bytes)) or x is None:
         raise TypeError(f"{name} must be an array of real numbers, got {type(x).__name__} {x!r}")
+    if isinstance(x, np.ma.MaskedArray):
+        x = _from_masked(x, name)
     try:
         arr = np.asarray(x)
     except ValueError as err:  # ragged nested lists
         raise ValueError(f"{name} must be a rectangular array of real numbers: {err}") from None
+    except OverflowError:
+        raise _overflow(name) from None
     if arr.dtype == object:
-        try:
-            if not all(isinstance(v, numbers.Real) for v in arr.ravel()):
-                raise TypeError
-            arr = arr.astype(np.float64)
-        except (TypeError, ValueError):
-            raise TypeError(
-                f"{name} must be an array of real numbers, got entries of type "
-                f"{sorted({type(v).__name__ for v in arr.ravel()})}"
-            ) from None
+        return _from_objects(arr, name)
     if arr.dtype.kind == "c":
         raise TypeError(f"{name} must be real, got complex dtype {arr.dtype}")
     if arr.dtype.kind not in "biuf":
         raise TypeError(f"{name} must be an array of real numbers, got dtype {arr.dtype}")
+    if arr.dtype.kind == "f" and arr.dtype.itemsize > 8:  # long double: may exceed float64
+        with np.errstate(over="ignore"):
+            out = arr.astype(np.float64)
+        if np.any(np.isinf(out) & np.isfinite(arr)):
+            raise _overflow(name)
+        return out
     return np.asarray(arr, dtype=np.float64)
 
 
@@ -53,12 +125,100 @@ def require_finite(arr, name):
     return arr
 
 
+def as_scalar(x, name):
+    """One finite real number, as a Python float (bools, strings and arrays of size > 1 refused).
+
+    >>> as_scalar(np.float32(0.5), "theta")
+    0.5
+    """
+    if isinstance(x, (bool, np.bool_)):
+        raise TypeError(f"{name} must be a real number, got bool {x!r}")
+    arr = as_float_array(x, name)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    value = float(arr)
+    if not np.isfinite(value):
+        raise ValueError(f"{name} must be a finite real number, got {value!r}")
+    return value
+
+
 def as_vectors(x, name="w"):
     """A finite float64 array of shape (..., 3)."""
     arr = as_float_array(x, name)
     if arr.ndim == 0 or arr.shape[-1] != 3:
         raise ValueError(f"{name} must have shape (..., 3) (3-vectors), got shape {arr.shape}")
     return require_finite(arr, name)
+
+
+def as_vector3(x, name="w"):
+    """One finite 3-vector: a float64 array of shape (3,)."""
+    arr = as_float_array(x, name)
+    if arr.shape != (3,):
+        raise ValueError(f"{name} must be one 3-vector of shape (3,), got shape {arr.shape}")
+    return require_finite(arr, name)
+
+
+def vector_norm(v):
+    """‖v‖ along the last axis without overflow or underflow (scaled by the largest entry).
+
+    Infinite where an entry is infinite, or where the norm itself exceeds 1.8e308.
+    """
+    v = np.asarray(v)
+    if v.shape[-1] == 0:
+        return np.zeros(v.shape[:-1])
+    big = np.max(np.abs(v), axis=-1, keepdims=True)
+    safe = np.where((big > 0) & (big < np.inf), big, 1.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        norm = big[..., 0] * np.sqrt(np.sum((v / safe) ** 2, axis=-1))
+    return np.where(big[..., 0] == np.inf, np.inf, norm)
+
+
+def frobenius_norm(M):
+    """‖M‖_F over the last two axes, without overflow or underflow."""
+    M = np.asarray(M)
+    return vector_norm(M.reshape(M.shape[:-2] + (M.shape[-2] * M.shape[-1],)))
+
+
+def as_direction(x, name="axis", tol=TOL):
+    r"""One non-zero 3-vector, returned normalised, :math:`x / \|x\|`.
+
+    The norm is taken without overflow (``[1e160, 1e160, 0]`` is a direction, not infinity).
+
+    Raises
+    ------
+    ValueError
+        If ``x`` is not one finite 3-vector, or :math:`\|x\| \le` tol (no direction).
+    """
+    v = as_vector3(x, name)
+    tol = check_tol(tol)
+    length = float(vector_norm(v))
+    if not length > tol:
+        raise ValueError(
+            f"{name} must be non-zero to define a direction: ‖{name}‖ = "
+            f"{fmt_residual(length, tol)} ≤ {tol_label(tol)}"
+        )
+    big = float(np.max(np.abs(v)))
+    unit = v / big
+    return unit / np.linalg.norm(unit)
+
+
+def as_unit_axes(x, name="w", tol=TOL, hint="divide it by its norm"):
+    r"""Unit 3-vectors, :math:`|\|x\| - 1| \le` tol, as a float64 array of shape (..., 3).
+
+    The message names the worst norm and its batch index, and ends with ``hint``.
+    """
+    w = as_vectors(x, name)
+    tol = check_tol(tol)
+    norm = vector_norm(w)
+    off = np.abs(norm - 1.0)
+    if not np.all(off <= tol):
+        worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
+        where = f" at batch index {tuple(int(i) for i in worst)}" if worst else ""
+        raise ValueError(
+            f"{name} must be a unit vector: ‖{name}‖ = {float(norm[worst]):.6g}, |‖{name}‖ − 1| = "
+            f"{fmt_residual(float(off[worst]), tol)} > {tol_label(tol)}{where}; {hint}"
+        )
+    return w
 
 
 def as_matrices(x, name="R", n=3, finite=True):
@@ -84,18 +244,46 @@ def as_angles(x, name="theta"):
     return require_finite(as_float_array(x, name), name)
 
 
-def as_count(n, name="n", minimum=0):
-    """A plain int >= minimum (bools and floats are refused)."""
+def as_count(n, name="n", minimum=0, maximum=None):
+    """A plain int in [minimum, maximum] (bools and floats are refused)."""
     if isinstance(n, bool) or not isinstance(n, numbers.Integral):
         raise TypeError(f"{name} must be an integer, got {type(n).__name__} {n!r}")
     if n < minimum:
         raise ValueError(f"{name} must be >= {minimum}, got {n}")
+    if maximum is not None and n > maximum:
+        raise ValueError(f"{name} must be <= {maximum}, got {n}")
     return int(n)
+
+
+def broadcast_batch(*named):
+    """The broadcast batch shape of ``(name, array, core_ndim)`` triples, or a ValueError.
+
+    ``core_ndim`` is 1 for vectors (..., 3) and 2 for matrices (..., 3, 3); the rest of each
+    shape is its batch shape.
+
+    >>> broadcast_batch(("p", np.zeros((4, 3)), 1), ("frame", np.zeros((3, 3)), 2))
+    (4,)
+    >>> broadcast_batch(("p", np.zeros((2, 3)), 1), ("frame", np.zeros((5, 3, 3)), 2))
+    Traceback (most recent call last):
+    ...
+    ValueError: the batches do not broadcast: p has shape (2, 3) (batch (2,)),
+    frame has shape (5, 3, 3) (batch (5,))
+    """
+    batches = [np.shape(a)[: np.ndim(a) - core] for _, a, core in named]
+    try:
+        return np.broadcast_shapes(*batches)
+    except ValueError:
+        shapes = ", ".join(
+            f"{name} has shape {np.shape(a)} (batch {b})" for (name, a, _), b in zip(named, batches)
+        )
+        raise ValueError(f"the batches do not broadcast: {shapes}") from None
 
 
 def fmt_vector(v, digits=4):
     """A short, platform-stable text form of a vector or scalar (rounded, no negative zeros)."""
-    arr = np.round(np.asarray(v, dtype=np.float64), digits) + 0.0
+    arr = np.asarray(v, dtype=np.float64)
+    with np.errstate(over="ignore", invalid="ignore"):  # rounding 1e305 to 4 digits overflows
+        arr = np.where(np.abs(arr) < 1e290, np.round(arr, digits), arr) + 0.0
     if arr.ndim == 0:
         return f"{float(arr):.{digits}g}"
     return np.array2string(arr, separator=", ", precision=digits, suppress_small=True)

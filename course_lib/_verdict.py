@@ -3,9 +3,10 @@ r"""The one verdict shape shared by every check in the package.
 Every checker in ``course_lib`` (exercise checks, the rigid-body test of Definition 1, the group
 axioms, the SO(3) membership test) answers with a :class:`Verdict`: whether the property holds,
 and one sentence saying what was found. ``bool(verdict)`` is ``verdict.ok``; in a notebook it shows
-as one coloured line beginning with ✓ or ✗; ``str`` gives the same line as plain text. Subclasses
-add their own fields (a counterexample, the failed axiom, ...) and may extend
-:meth:`Verdict._details_markdown` with a table of them.
+as one bold-marked line beginning with ✓ or ✗; ``str`` gives the same line as plain text. Subclasses
+add their own fields (a counterexample, the failed axiom, ...), may extend
+:meth:`Verdict._details_markdown` with a table of them and :meth:`Verdict._headline_markdown`
+with a word after the mark (``**✗ not rigid.**``). The message never carries the mark itself.
 
 Examples
 --------
@@ -49,11 +50,18 @@ class Verdict:
     def __str__(self):
         return f"{self.mark} {self.message}"
 
+    def _headline_markdown(self):
+        """The verdict line in markdown: the bold mark, then the message."""
+        return f"**{self.mark}** {self.message}"
+
     def _details_markdown(self):
         """Extra markdown shown under the verdict line (none by default)."""
         return ""
 
+    # What separates the verdict line from the details (a blank line: a new paragraph).
+    _details_separator = "\n\n"
+
     def _repr_markdown_(self):
         details = self._details_markdown()
-        line = f"**{self.mark}** {self.message}"
-        return f"{line}\n\n{details}" if details else line
+        line = self._headline_markdown()
+        return f"{line}{self._details_separator}{details}" if details else line

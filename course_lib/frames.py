@@ -1,4 +1,5 @@
-r"""Reference frames and rotation matrices (notes §0.1.1 "Reference Frames", §0.1.2 "Rotation Matrices").
+r"""Reference frames and rotation matrices (notes §0.1.1 "Reference Frames", §0.1.2 "Rotation
+Matrices").
 
 A frame is stored as a 3x3 matrix whose COLUMNS are its basis vectors,
 
@@ -15,12 +16,13 @@ Every check compares a residual norm with the one tolerance of the package,
 :data:`course_lib.tolerance.TOL`.
 """
 
+import math
 
 import numpy as np
 
 from . import so3
-from ._arrays import as_matrices, as_vectors
-from .tolerance import TOL, check_tol, tol_label
+from ._arrays import as_matrices, as_vectors, broadcast_batch, frobenius_norm, vector_norm
+from .tolerance import TOL, check_tol, fmt_residual, tol_label
 
 __all__ = [
     "is_orthonormal",
@@ -46,14 +48,48 @@ def _as_bool(result):
 
 
 def _orthonormality_residual(frame):
-    """‖FᵀF − I‖_F for each frame of a (..., 3, 3) stack."""
-    gram = np.swapaxes(frame, -1, -2) @ frame
-    return np.linalg.norm(gram - np.eye(3), axis=(-2, -1))
+    """‖FᵀF − I‖_F for each frame of a (..., 3, 3) stack (inf where it overflows)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        gram = np.swapaxes(frame, -1, -2) @ frame
+        residual = frobenius_norm(gram - np.eye(3))
+    return np.where(np.isnan(residual), np.inf, residual)
 
 
 def _handedness_residual(frame):
-    """‖e1 × e2 − e3‖ for each frame of a (..., 3, 3) stack."""
-    return np.linalg.norm(np.cross(frame[..., :, 0], frame[..., :, 1]) - frame[..., :, 2], axis=-1)
+    """‖e1 × e2 − e3‖ for each frame of a (..., 3, 3) stack (inf where it overflows)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        cross = np.cross(frame[..., :, 0], frame[..., :, 1])
+        residual = vector_norm(cross - frame[..., :, 2])
+    return np.where(np.isnan(residual), np.inf, residual)
+
+
+def _orthonormality_problems(e, names, tol):
+    """(size, text) for each property of eqs. (1)-(2) the columns e break, largest first."""
+    problems = []
+    for i in range(3):
+        length = float(vector_norm(e[i]))
+        off = abs(length - 1.0)
+        problems.append(
+            (
+                off * (length + 1.0),  # |‖e‖² − 1|, without squaring a huge length
+                f"{names[i]} is not a unit vector: ‖{names[i]}‖ = {length:.6g} "
+                f"(|‖{names[i]}‖ − 1| = {fmt_residual(off, tol)}); divide it by its length",
+            )
+        )
+    for i, j in ((0, 1), (0, 2), (1, 2)):
+        with np.errstate(over="ignore", invalid="ignore"):
+            dot = float(e[i] @ e[j])
+        dot = dot if math.isfinite(dot) else math.inf
+        shown = f"{dot:.1e}" if math.isfinite(dot) else "beyond ±1.8e308 (overflow)"
+        problems.append(
+            (
+                abs(dot) * math.sqrt(2.0),  # inf when the dot product overflowed
+                f"{names[i]} and {names[j]} are not orthogonal: {names[i]} · {names[j]} = "
+                f"{shown}; make them perpendicular (e.g. Gram-Schmidt)",
+            )
+        )
+    problems.sort(key=lambda item: -item[0])
+    return [text for size, text in problems if size > tol] or [problems[0][1]]
 
 
 def _diagnose(frame, tol, names=_BASIS_NAMES):
@@ -64,43 +100,25 @@ def _diagnose(frame, tol, names=_BASIS_NAMES):
     if residual > tol:
         # The decision uses the Frobenius residual (as is_orthonormal does); the details name the
         # individual properties of eqs. (1)-(2) that contribute to it, largest first.
-        problems = []
-        for i in range(3):
-            length = float(np.linalg.norm(e[i]))
-            problems.append(
-                (
-                    abs(length**2 - 1.0),
-                    f"{names[i]} is not a unit vector: ‖{names[i]}‖ = {length:.6g} "
-                    f"(|‖{names[i]}‖ − 1| = {abs(length - 1.0):.1e}); divide it by its length",
-                )
-            )
-        for i, j in ((0, 1), (0, 2), (1, 2)):
-            dot = float(e[i] @ e[j])
-            problems.append(
-                (
-                    abs(dot) * np.sqrt(2.0),
-                    f"{names[i]} and {names[j]} are not orthogonal: {names[i]} · {names[j]} = {dot:.1e}; "
-                    f"make them perpendicular (e.g. Gram-Schmidt)",
-                )
-            )
-        problems.sort(key=lambda item: -item[0])
-        shown = [text for size, text in problems if size > tol] or [problems[0][1]]
         return (
-            f"the frame is not orthonormal: ‖FᵀF − I‖ = {residual:.1e} > {label} "
-            f"(F = [{' '.join(names)}] as columns). " + "; ".join(shown) + "."
+            f"the frame is not orthonormal: ‖FᵀF − I‖ = {fmt_residual(residual, tol)} > {label} "
+            f"(F = [{' '.join(names)}] as columns). "
+            + "; ".join(_orthonormality_problems(e, names, tol))
+            + "."
         )
     handed = float(_handedness_residual(frame))
     if handed > tol:
-        flipped = float(np.linalg.norm(np.cross(e[0], e[1]) + e[2]))
+        a, b, c = names
+        flipped = float(vector_norm(np.cross(e[0], e[1]) + e[2]))
         if flipped <= handed:
             return (
-                f"the frame is left-handed: {names[0]} × {names[1]} = −{names[2]} "
-                f"(‖{names[0]} × {names[1]} − {names[2]}‖ = {handed:.1e} > {label}); "
-                f"negate one basis vector (e.g. use −{names[2]}) or swap two of them to make it right-handed."
+                f"the frame is left-handed: {a} × {b} = −{c} (‖{a} × {b} − {c}‖ = "
+                f"{fmt_residual(handed, tol)} > {label}); negate one basis vector (e.g. use −{c}) "
+                f"or swap two of them to make it right-handed."
             )
         return (
-            f"the frame is not right-handed: ‖{names[0]} × {names[1]} − {names[2]}‖ = {handed:.1e} > {label}; "
-            f"the third basis vector must be the cross product of the first two."
+            f"the frame is not right-handed: ‖{a} × {b} − {c}‖ = {fmt_residual(handed, tol)} > "
+            f"{label}; the third basis vector must be the cross product of the first two."
         )
     return None
 
@@ -227,7 +245,8 @@ def check_frame(frame, tol=TOL):
     >>> check_frame(np.diag([1.0, 1.0, -1.0]))
     Traceback (most recent call last):
         ...
-    ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09); negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
+    ValueError: the frame is left-handed: e1 × e2 = −e3 (‖e1 × e2 − e3‖ = 2.0e+00 > TOL = 1e-09);
+    negate one basis vector (e.g. use −e3) or swap two of them to make it right-handed.
     """
     tol = check_tol(tol)
     frame = as_matrices(frame, "frame")
@@ -275,13 +294,14 @@ def frame_from_vectors(e1, e2, e3):
            [ 0.,  0., -1.],
            [ 0.,  1.,  0.]])
     """
-    vectors = [as_vectors(v, name) for v, name in zip((e1, e2, e3), _BASIS_NAMES)]
-    try:
-        vectors = np.broadcast_arrays(*vectors)
-    except ValueError:
-        shapes = ", ".join(f"{n}: {v.shape}" for n, v in zip(_BASIS_NAMES, vectors))
-        raise ValueError(f"the basis vectors must have broadcastable shapes (..., 3), got {shapes}") from None
-    return np.stack(vectors, axis=-1)
+    return _stack_columns((e1, e2, e3), _BASIS_NAMES)
+
+
+def _stack_columns(vectors, names):
+    """Three (..., 3) vectors as the columns of (..., 3, 3) frames; batches must broadcast."""
+    vectors = [as_vectors(v, name) for v, name in zip(vectors, names)]
+    batch = broadcast_batch(*((name, v, 1) for name, v in zip(names, vectors)))
+    return np.stack([np.broadcast_to(v, batch + (3,)) for v in vectors], axis=-1)
 
 
 def coordinates(p, frame, origin=(0, 0, 0)):
@@ -291,7 +311,8 @@ def coordinates(p, frame, origin=(0, 0, 0)):
     origin :math:`o` to the point (eqs. 3-5):
 
     .. math:: p_x = (p - o) \cdot e_1, \quad p_y = (p - o) \cdot e_2, \quad p_z = (p - o) \cdot e_3,
-              \qquad\text{i.e.}\quad \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} (p - o),
+              \qquad\text{i.e.}\quad
+              \begin{bmatrix} p_x \\ p_y \\ p_z \end{bmatrix} = F^\mathsf{T} (p - o),
 
     so that :math:`p = o + p_x e_1 + p_y e_2 + p_z e_3`. The notes' eqs. 3-5 project
     :math:`p` itself, which is the case :math:`o = 0` (the default): right only when the frame's
@@ -341,19 +362,16 @@ def coordinates(p, frame, origin=(0, 0, 0)):
     p = as_vectors(p, "p")
     o = as_vectors(origin, "origin")
     frame = check_frame(frame)
-    try:
+    broadcast_batch(("p", p, 1), ("frame", frame, 2), ("origin", o, 1))
+    with np.errstate(over="ignore", invalid="ignore"):
         rel = p - o
-    except ValueError:
+        out = (np.swapaxes(frame, -1, -2) @ rel[..., None])[..., 0]
+    if not np.isfinite(out).all():
         raise ValueError(
-            f"p and origin batches do not broadcast: p has shape {p.shape}, origin has shape {o.shape}"
-        ) from None
-    try:
-        return (np.swapaxes(frame, -1, -2) @ rel[..., None])[..., 0]
-    except ValueError:
-        raise ValueError(
-            f"p and frame batches do not broadcast: p − origin has shape {rel.shape}, "
-            f"frame has shape {frame.shape}"
-        ) from None
+            "p − origin or its coordinates overflow float64 (beyond 1.8e308): the point is too "
+            "far from the origin to be written in this frame"
+        )
+    return out
 
 
 def rotation_from_axes(x_ab, y_ab, z_ab):
@@ -402,12 +420,7 @@ def rotation_from_axes(x_ab, y_ab, z_ab):
            [ 0.    ,  0.    ,  1.    ]])
     """
     names = ("x_ab", "y_ab", "z_ab")
-    vectors = [as_vectors(v, name) for v, name in zip((x_ab, y_ab, z_ab), names)]
-    try:
-        R = frame_from_vectors(*vectors)
-    except ValueError:
-        shapes = ", ".join(f"{n}: {v.shape}" for n, v in zip(names, vectors))
-        raise ValueError(f"x_ab, y_ab, z_ab must have broadcastable shapes (..., 3), got {shapes}") from None
+    R = _stack_columns((x_ab, y_ab, z_ab), names)
     try:
         return so3.check_rotation(R, name="R_ab")
     except ValueError as err:
@@ -459,9 +472,11 @@ def change_frame(R_ab, v_b):
     """
     R_ab = so3.check_rotation(R_ab, name="R_ab")
     v_b = as_vectors(v_b, "v_b")
-    try:
-        return np.asarray((R_ab @ v_b[..., None])[..., 0], dtype=np.float64)
-    except ValueError:
+    broadcast_batch(("R_ab", R_ab, 2), ("v_b", v_b, 1))
+    with np.errstate(over="ignore", invalid="ignore"):
+        v_a = (R_ab @ v_b[..., None])[..., 0]
+    if not np.isfinite(v_a).all():
         raise ValueError(
-            f"R_ab and v_b batches do not broadcast: R_ab has shape {np.shape(R_ab)}, v_b has shape {v_b.shape}"
-        ) from None
+            "R_ab v_b overflows float64: v_b is too long (a component of v_a would exceed 1.8e308)"
+        )
+    return v_a

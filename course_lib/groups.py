@@ -26,6 +26,7 @@ import numpy as np
 
 from . import so3
 from ._arrays import as_count, fmt_vector
+from ._verdict import Verdict
 from .tolerance import TOL, check_tol, tol_label
 
 __all__ = [
@@ -55,34 +56,30 @@ class Failure(NamedTuple):
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class GroupCheck:
-    """The result of :func:`check_group`.
+class GroupCheck(Verdict):
+    """The result of :func:`check_group`, a :class:`~course_lib._verdict.Verdict`.
 
     Attributes
     ----------
     ok : bool
         True when no axiom failed on the sample.
+    message : str
+        The summary (``str`` puts ✓ or ✗ before it), then one line per failed axiom with its
+        first failure.
     failures : list of Failure
         Every failed instance, axioms in the notes' order.
-    message : str
-        A ✓/✗ summary with the first failure of each axiom.
     name : str
         The name of the structure, e.g. ``"(SO(3), +)"``.
     counts : dict
         How many instances of each axiom were checked.
     """
 
-    ok: bool
-    failures: list
-    message: str
-    name: str
-    counts: dict
+    failures: list = field(default_factory=list)
+    name: str = "(G, ∘)"
+    counts: dict = field(default_factory=dict)
 
-    def __bool__(self):
-        return bool(self.ok)
-
-    def __str__(self):
-        return self.message
+    # The failed axioms are a list right under the verdict line.
+    _details_separator = "\n"
 
     def __repr__(self):
         failed = sorted({f.axiom for f in self.failures}, key=AXIOMS.index)
@@ -91,32 +88,41 @@ class GroupCheck:
             f"n_failures={len(self.failures)})"
         )
 
-    def _repr_markdown_(self):
-        head, _, rest = self.message.partition("\n")
-        lines = [f"**{head}**"]
-        lines += [f"- {line.lstrip('- ')}" for line in rest.splitlines() if line.strip()]
-        return "\n".join(lines)
+    def _headline_markdown(self):
+        return f"**{self.mark} {self.message.partition(chr(10))[0]}**"
+
+    def _details_markdown(self):
+        rest = self.message.partition("\n")[2]
+        return "\n".join(f"- {line.lstrip('- ')}" for line in rest.splitlines() if line.strip())
 
 
 def _default_equal(tol):
+    """‖a − b‖ ≤ tol, scaled by the largest entry beyond 1 (rounding grows with the size)."""
+
     def equal(a, b):
         try:
             a = np.asarray(a, dtype=np.float64)
             b = np.asarray(b, dtype=np.float64)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             return bool(np.array_equal(np.asarray(a, dtype=object), np.asarray(b, dtype=object)))
         if a.shape != b.shape:
             return False
-        return bool(np.linalg.norm(a - b) <= tol)
+        with np.errstate(over="ignore", invalid="ignore"):
+            scale = max(
+                1.0, float(np.max(np.abs(a), initial=0.0)), float(np.max(np.abs(b), initial=0.0))
+            )
+            return bool(np.linalg.norm((a - b) / scale) <= tol)
 
     return equal
 
 
 def _fmt(x):
     """Short text for an element: rounded numbers, or repr for anything else."""
+    if x is None or isinstance(x, (str, bytes)):
+        return repr(x)
     try:
         arr = np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         return repr(x)
     text = fmt_vector(arr)
     return text.replace("\n", "") if arr.ndim >= 2 else text
@@ -127,10 +133,12 @@ def _fmt_member(x):
     text = _fmt(x)
     try:
         arr = np.asarray(x, dtype=np.float64)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         return text
     if arr.ndim == 2 and arr.shape[0] == arr.shape[1] and np.all(np.isfinite(arr)):
-        text += f" (det = {float(np.linalg.det(arr)):.6g})"
+        with np.errstate(all="ignore"):
+            det = float(np.linalg.det(arr))
+        text += f" (det = {det:.6g})" if math.isfinite(det) else ""
     return text
 
 
@@ -145,6 +153,67 @@ def _truth(value, what):
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
     raise TypeError(f"{what} must return a bool, got {type(value).__name__} {value!r}")
+
+
+class _Structure(NamedTuple):
+    """The candidate group, with every user callable wrapped to give clear errors."""
+
+    elements: list
+    op: object
+    identity: object
+    inverse: object
+    equal: object
+    member: object
+
+
+def _returning(fn, fn_name):
+    """fn, refusing None as a result (a missing ``return`` would otherwise read as "nan")."""
+
+    def call(*args):
+        out = fn(*args)
+        if out is None:
+            shown = ", ".join(_fmt(a) for a in args)
+            raise TypeError(
+                f"{fn_name}({shown}) returned None; {fn_name} must return an element of the set "
+                f"(is a return statement missing?)"
+            )
+        return out
+
+    return call
+
+
+def _checked(fn, fn_name):
+    """fn as a bool-valued test: a TypeError if it returns anything but a bool."""
+
+    def call(*args):
+        return _truth(fn(*args), fn_name)
+
+    return call
+
+
+def _structure(elements, op, identity, inverse, equal, member, tol):
+    """Validate check_group's arguments and wrap its callables."""
+    for fn, fn_name in ((op, "op"), (inverse, "inverse")):
+        if not callable(fn):
+            raise TypeError(f"{fn_name} must be callable, got {type(fn).__name__} {fn!r}")
+    for fn, fn_name in ((equal, "equal"), (member, "member")):
+        if fn is not None and not callable(fn):
+            raise TypeError(f"{fn_name} must be callable or None, got {type(fn).__name__} {fn!r}")
+    elements = list(elements)
+    if not elements:
+        raise ValueError("elements must hold at least one element of the set")
+    if identity is None:
+        raise TypeError("identity must be an element of the set, got None")
+    equal = _default_equal(tol) if equal is None else _checked(equal, "equal")
+    member = _member_of_sample(elements, equal) if member is None else _checked(member, "member")
+    for i, x in enumerate(elements):
+        if not member(x):
+            raise ValueError(
+                f"elements[{i}] = {_fmt_member(x)} is not a member of the set (member(x) is "
+                f"False); the sample must be drawn from the set being checked"
+            )
+    op, inverse = _returning(op, "op"), _returning(inverse, "inverse")
+    return _Structure(elements, op, identity, inverse, equal, member)
 
 
 def _sample_tuples(n, k, max_samples, rng):
@@ -172,13 +241,16 @@ def check_group(
     With :math:`S \subset G` the sample and :math:`\mathrm{member}` the test of :math:`x \in G`:
 
     1. closure: :math:`\mathrm{member}(g_1 \circ g_2)` for pairs :math:`g_1, g_2 \in S`;
-    2. identity: :math:`\mathrm{member}(e)` and :math:`e \circ g = g \circ e = g` for :math:`g \in S`;
+    2. identity: :math:`\mathrm{member}(e)` and :math:`e \circ g = g \circ e = g`
+       for :math:`g \in S`;
     3. inverse: :math:`\mathrm{member}(g^{-1})` and :math:`g \circ g^{-1} = g^{-1} \circ g = e`;
     4. associativity: :math:`g_1 \circ (g_2 \circ g_3) = (g_1 \circ g_2) \circ g_3` on triples.
 
     All pairs and triples are used when there are at most ``max_samples`` of them, otherwise a
     seeded random sample of that many. Equality defaults to the tolerance policy,
-    :math:`\|a - b\| \le \mathrm{tol}` (Frobenius for matrices, Euclidean for vectors).
+    :math:`\|a - b\| \le \mathrm{tol} \cdot \max(1, |a|_\infty, |b|_\infty)` (Frobenius for
+    matrices, Euclidean for vectors; the scale only matters for entries beyond 1, where
+    rounding grows with the size).
     Uniqueness of the inverse (in the notes' axiom 3) is not tested separately: it follows
     from axioms 2-4. A sample can refute the axioms, never prove them (the proofs are the
     notes' example for :math:`(\mathbb{R}, +)` and Proposition 5 for SO(3)).
@@ -194,7 +266,7 @@ def check_group(
     inverse : callable
         ``inverse(g)`` = the candidate :math:`g^{-1}`.
     equal : callable, optional
-        ``equal(a, b) -> bool``; default: ``‖a − b‖ ≤ tol``.
+        ``equal(a, b) -> bool``; default: ``‖a − b‖ ≤ tol`` (times the largest entry if > 1).
     tol : float, optional
         Tolerance of the default ``equal``, default :data:`~course_lib.tolerance.TOL`.
     member : callable, optional
@@ -231,118 +303,107 @@ def check_group(
     >>> print(result.failures[0].message)    # the notes' I + I = 2I
     g1 ∘ g2 = [[2., 0., 0.], [0., 2., 0.], [0., 0., 2.]] (det = 8) is not in the set
     """
-    for fn, fn_name in ((op, "op"), (inverse, "inverse")):
-        if not callable(fn):
-            raise TypeError(f"{fn_name} must be callable, got {type(fn).__name__} {fn!r}")
-    for fn, fn_name in ((equal, "equal"), (member, "member")):
-        if fn is not None and not callable(fn):
-            raise TypeError(f"{fn_name} must be callable or None, got {type(fn).__name__} {fn!r}")
     tol = check_tol(tol)
     max_samples = as_count(max_samples, "max_samples", minimum=1)
-    elements = list(elements)
-    if not elements:
-        raise ValueError("elements must hold at least one element of the set")
-    if equal is None:
-        equal = _default_equal(tol)
-    else:
-        user_equal = equal
-
-        def equal(a, b):
-            return _truth(user_equal(a, b), "equal")
-
-    if member is None:
-        member = _member_of_sample(elements, equal)
-    else:
-        user_member = member
-
-        def member(x):
-            return _truth(user_member(x), "member")
-
-    for i, x in enumerate(elements):
-        if not member(x):
-            raise ValueError(
-                f"elements[{i}] = {_fmt_member(x)} is not a member of the set (member(x) is False); "
-                f"the sample must be drawn from the set being checked"
-            )
-
-    n = len(elements)
+    G = _structure(elements, op, identity, inverse, equal, member, tol)
     rng = np.random.default_rng(seed)
+    pairs = _sample_tuples(len(G.elements), 2, max_samples, rng)
+    triples = _sample_tuples(len(G.elements), 3, max_samples, rng)
+    failures = _closure(G, pairs) + _identity(G) + _inverse(G) + _associativity(G, triples)
+    counts = {
+        "closure": len(pairs),
+        "identity": 1 + len(G.elements),
+        "inverse": len(G.elements),
+        "associativity": len(triples),
+    }
+    return _group_verdict(name, len(G.elements), failures, counts, tol)
+
+
+def _closure(G, pairs):
+    """Axiom 1: g1 ∘ g2 is a member, for the sampled pairs."""
     failures = []
-    counts = dict.fromkeys(AXIOMS, 0)
+    for i, j in pairs:
+        a, b = G.elements[i], G.elements[j]
+        c = G.op(a, b)
+        if not G.member(c):
+            failures.append(
+                Failure("closure", (a, b), f"g1 ∘ g2 = {_fmt_member(c)} is not in the set")
+            )
+    return failures
 
-    # 1. closure
-    for i, j in _sample_tuples(n, 2, max_samples, rng):
-        a, b = elements[i], elements[j]
-        c = op(a, b)
-        counts["closure"] += 1
-        if not member(c):
-            failures.append(Failure("closure", (a, b), f"g1 ∘ g2 = {_fmt_member(c)} is not in the set"))
 
-    # 2. identity
-    e = identity
-    counts["identity"] += 1
-    if not member(e):
-        failures.append(Failure("identity", (e,), f"the identity e = {_fmt_member(e)} is not in the set"))
-    for g in elements:
-        counts["identity"] += 1
-        left, right = op(e, g), op(g, e)
-        bad = [s for s, v in (("e ∘ g", left), ("g ∘ e", right)) if not equal(v, g)]
+def _identity(G):
+    """Axiom 2: e is a member and e ∘ g = g ∘ e = g."""
+    e = G.identity
+    failures = []
+    if not G.member(e):
+        failures.append(
+            Failure("identity", (e,), f"the identity e = {_fmt_member(e)} is not in the set")
+        )
+    for g in G.elements:
+        sides = (("e ∘ g", G.op(e, g)), ("g ∘ e", G.op(g, e)))
+        bad = [(side, v) for side, v in sides if not G.equal(v, g)]
         if bad:
-            shown = ", ".join(f"{s} = {_fmt(v)}" for s, v in (("e ∘ g", left), ("g ∘ e", right)) if s in bad)
-            failures.append(Failure("identity", (g,), f"{' and '.join(bad)} ≠ g for g = {_fmt(g)}: {shown}"))
+            shown = ", ".join(f"{side} = {_fmt(v)}" for side, v in bad)
+            which = " and ".join(side for side, _ in bad)
+            failures.append(Failure("identity", (g,), f"{which} ≠ g for g = {_fmt(g)}: {shown}"))
+    return failures
 
-    # 3. inverse
-    for g in elements:
-        counts["inverse"] += 1
-        gi = inverse(g)
-        problems = []
-        if not member(gi):
-            problems.append(f"g⁻¹ = {_fmt_member(gi)} is not in the set")
-        left, right = op(g, gi), op(gi, g)
-        if not equal(left, e):
+
+def _inverse(G):
+    """Axiom 3: g⁻¹ is a member and g ∘ g⁻¹ = g⁻¹ ∘ g = e."""
+    failures = []
+    for g in G.elements:
+        gi = G.inverse(g)
+        problems = [] if G.member(gi) else [f"g⁻¹ = {_fmt_member(gi)} is not in the set"]
+        left, right = G.op(g, gi), G.op(gi, g)
+        if not G.equal(left, G.identity):
             problems.append(f"g ∘ g⁻¹ = {_fmt(left)} ≠ e")
-        if not equal(right, e):
+        if not G.equal(right, G.identity):
             problems.append(f"g⁻¹ ∘ g = {_fmt(right)} ≠ e")
         if problems:
-            failures.append(Failure("inverse", (g, gi), f"for g = {_fmt(g)}: " + "; ".join(problems)))
-
-    # 4. associativity
-    for i, j, k in _sample_tuples(n, 3, max_samples, rng):
-        a, b, c = elements[i], elements[j], elements[k]
-        counts["associativity"] += 1
-        left, right = op(a, op(b, c)), op(op(a, b), c)
-        if not equal(left, right):
             failures.append(
-                Failure(
-                    "associativity",
-                    (a, b, c),
-                    f"g1 ∘ (g2 ∘ g3) = {_fmt(left)} ≠ (g1 ∘ g2) ∘ g3 = {_fmt(right)}",
-                )
+                Failure("inverse", (g, gi), f"for g = {_fmt(g)}: " + "; ".join(problems))
             )
+    return failures
 
-    label = tol_label(tol)
+
+def _associativity(G, triples):
+    """Axiom 4: g1 ∘ (g2 ∘ g3) = (g1 ∘ g2) ∘ g3, for the sampled triples."""
+    failures = []
+    for i, j, k in triples:
+        a, b, c = G.elements[i], G.elements[j], G.elements[k]
+        left, right = G.op(a, G.op(b, c)), G.op(G.op(a, b), c)
+        if not G.equal(left, right):
+            message = f"g1 ∘ (g2 ∘ g3) = {_fmt(left)} ≠ (g1 ∘ g2) ∘ g3 = {_fmt(right)}"
+            failures.append(Failure("associativity", (a, b, c), message))
+    return failures
+
+
+def _group_verdict(name, n, failures, counts, tol):
+    """The GroupCheck: ✓ with what was checked, or ✗ with the first failure of each axiom."""
     checked = (
         f"{n} sample element{'s' if n != 1 else ''}, {counts['closure']} pairs, "
         f"{counts['associativity']} triples"
     )
     if not failures:
         message = (
-            f"✓ {name} passes all four group axioms on {checked} (equality within {label}); "
-            f"a sample can refute the axioms, never prove them."
+            f"{name} passes all four group axioms on {checked} (equality within "
+            f"{tol_label(tol)}); a sample can refute the axioms, never prove them."
         )
-    else:
-        failed = [a for a in AXIOMS if any(f.axiom == a for f in failures)]
-        which = ", ".join(f"{AXIOMS.index(a) + 1} ({a})" for a in failed)
-        lines = [f"✗ {name} is not a group: fails {which} on {checked}."]
-        for axiom in failed:
-            mine = [f for f in failures if f.axiom == axiom]
-            first = mine[0]
-            lines.append(
-                f"- axiom {AXIOMS.index(axiom) + 1} ({axiom}), {len(mine)} failure{'s' if len(mine) != 1 else ''}, "
-                f"e.g. {first.message}"
-            )
-        message = "\n".join(lines)
-    return GroupCheck(ok=not failures, failures=failures, message=message, name=name, counts=counts)
+        return GroupCheck(ok=True, message=message, failures=[], name=name, counts=counts)
+    failed = [a for a in AXIOMS if any(f.axiom == a for f in failures)]
+    which = ", ".join(f"{AXIOMS.index(a) + 1} ({a})" for a in failed)
+    lines = [f"{name} is not a group: fails {which} on {checked}."]
+    for axiom in failed:
+        mine = [f for f in failures if f.axiom == axiom]
+        lines.append(
+            f"- axiom {AXIOMS.index(axiom) + 1} ({axiom}), {len(mine)} "
+            f"failure{'s' if len(mine) != 1 else ''}, e.g. {mine[0].message}"
+        )
+    return GroupCheck(
+        ok=False, message="\n".join(lines), failures=failures, name=name, counts=counts
+    )
 
 
 # --------------------------------------------------------------------------------------------

@@ -18,8 +18,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import so3
-from ._arrays import as_count, as_float_array, as_vectors, fmt_vector, require_finite
-from .tolerance import TOL, check_tol, tol_label
+from ._arrays import (
+    as_count,
+    as_direction,
+    as_float_array,
+    as_vector3,
+    as_vectors,
+    fmt_vector,
+    require_finite,
+    vector_norm,
+)
+from ._verdict import Verdict
+from .tolerance import TOL, check_tol, fmt_residual, tol_label
 
 __all__ = [
     "Counterexample",
@@ -67,34 +77,26 @@ class Counterexample:
 
 
 @dataclass(frozen=True, eq=False, repr=False)
-class RigidCheck:
-    r"""The result of :func:`check_rigid`.
+class RigidCheck(Verdict):
+    r"""The result of :func:`check_rigid`, a :class:`~course_lib._verdict.Verdict`.
 
     Attributes
     ----------
     ok : bool
         True when both conditions hold on every sample pair (within the tolerance).
+    message : str
+        A sentence saying what was found, with the numbers (``str`` puts ✓ or ✗ before it).
     condition : {"length", "cross product", None}
         The first condition that fails, in the notes' order; None when ``ok``.
-    message : str
-        A sentence saying what was found, with the numbers.
     counterexample : Counterexample or None
         The sample pair with the largest mismatch for the failed condition.
     n_pairs : int
         How many (ordered) pairs of points were checked.
     """
 
-    ok: bool
-    condition: object
-    message: str
-    counterexample: object
-    n_pairs: int
-
-    def __bool__(self):
-        return bool(self.ok)
-
-    def __str__(self):
-        return self.message
+    condition: object = None
+    counterexample: object = None
+    n_pairs: int = 0
 
     def __repr__(self):
         mismatch = None if self.counterexample is None else f"{self.counterexample.mismatch:.1e}"
@@ -103,12 +105,14 @@ class RigidCheck:
             f"mismatch={mismatch})"
         )
 
-    def _repr_markdown_(self):
-        if self.ok:
-            return f"**✓ rigid.** {self.message[2:]}"
+    def _headline_markdown(self):
+        return f"**{self.mark} {'rigid.' if self.ok else 'not rigid.'}** {self.message}"
+
+    def _details_markdown(self):
         c = self.counterexample
+        if c is None:
+            return ""
         return (
-            f"**✗ not rigid.** {self.message[2:]}\n\n"
             f"| | |\n|---|---|\n"
             f"| $p_1$ | `{fmt_vector(c.p1)}` |\n| $p_2$ | `{fmt_vector(c.p2)}` |\n"
             f"| left side | `{fmt_vector(c.lhs)}` |\n| right side | `{fmt_vector(c.rhs)}` |\n"
@@ -142,14 +146,22 @@ def _evaluate(g, X, tol):
         rows = [single_out, _call(g, X[1])[1]]
         try:
             agree = np.allclose(
-                np.asarray(batch_out, dtype=np.float64), np.asarray(rows, dtype=np.float64), rtol=0, atol=tol
+                np.asarray(batch_out, dtype=np.float64),
+                np.asarray(rows, dtype=np.float64),
+                rtol=0,
+                atol=tol,
             )
         except (TypeError, ValueError):
             agree = False
         batched = bool(agree)
     if not (batched or per_point):
+
         def outcome(shape, out):
-            return f"raised {type(out).__name__}: {out}" if shape is None else f"returned shape {shape}"
+            return (
+                f"raised {type(out).__name__}: {out}"
+                if shape is None
+                else f"returned shape {shape}"
+            )
 
         got_batched, got_single = outcome(batch_shape, batch_out), outcome(single_shape, single_out)
         cause = single_out if single_shape is None else (batch_out if batch_shape is None else None)
@@ -183,7 +195,9 @@ def _pairs(points, n, seed):
     pts = as_vectors(points, "points")
     if pts.ndim == 2:
         if pts.shape[0] < 2:
-            raise ValueError(f"points must hold at least 2 points to form a pair, got shape {pts.shape}")
+            raise ValueError(
+                f"points must hold at least 2 points to form a pair, got shape {pts.shape}"
+            )
         i, j = np.nonzero(~np.eye(pts.shape[0], dtype=bool))
         return pts[i], pts[j]
     if pts.ndim == 3 and pts.shape[1] == 2 and pts.shape[0] >= 1:
@@ -192,6 +206,94 @@ def _pairs(points, n, seed):
         f"points must have shape (N, 3) (every ordered pair of distinct points is checked) or "
         f"(K, 2, 3) (K explicit pairs), got shape {pts.shape}"
     )
+
+
+def _require_checkable(p1, p2):
+    """Refuse sample points so large that the check's own p1 − p2 or p1 × p2 overflows."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        bad = ~(np.isfinite(p1 - p2).all(axis=-1) & np.isfinite(np.cross(p1, p2)).all(axis=-1))
+    if bad.any():
+        w = int(np.argmax(bad))
+        raise ValueError(
+            f"points are too large for this check: p1 − p2 or p1 × p2 overflows float64 for "
+            f"p1 = {p1[w]}, p2 = {p2[w]} (‖p1‖ = {float(vector_norm(p1[w])):.3g}, ‖p2‖ = "
+            f"{float(vector_norm(p2[w])):.3g}); use points with norms below 1e150"
+        )
+
+
+def _measure(p1, p2, image):
+    """Both conditions on the pairs: {condition: (mismatch, lhs, rhs, allowed / tol)}.
+
+    A mismatch that overflows is infinite (it fails); the allowed mismatch grows with the
+    sizes involved beyond 1, so that rounding of large points is not taken for a failure.
+    """
+    k = p1.shape[0]
+    g1, g2, gc = image[:k], image[k : 2 * k], image[2 * k :]
+    with np.errstate(over="ignore", invalid="ignore"):
+        len_lhs = vector_norm(g1 - g2)
+        len_rhs = vector_norm(p1 - p2)
+        cross_lhs = np.cross(g1, g2)
+        measured = {
+            "length": (np.abs(len_lhs - len_rhs), len_lhs, len_rhs, np.maximum(1.0, len_rhs)),
+            "cross product": (
+                vector_norm(cross_lhs - gc),
+                cross_lhs,
+                gc,
+                np.maximum(1.0, vector_norm(p1) * vector_norm(p2)),
+            ),
+        }
+    for mismatch, *_ in measured.values():
+        mismatch[~np.isfinite(mismatch)] = np.inf
+    return measured
+
+
+def _allowed(scale, label):
+    return label if scale == 1.0 else f"{label} × {scale:.3g}"
+
+
+def _failure_message(condition, c, scale, tol):
+    label = tol_label(tol)
+    if condition == "length":
+        return (
+            f"‖g(p1) − g(p2)‖ = {c.lhs:.6g} but ‖p1 − p2‖ = {c.rhs:.6g} "
+            f"(mismatch {fmt_residual(c.mismatch, scale * tol)} > {_allowed(scale, label)})"
+        )
+    if not np.isfinite(c.lhs).all():
+        return "g(p1)×g(p2) overflows float64: g maps these points too far from the origin"
+    return (
+        f"g(p1)×g(p2) = {fmt_vector(c.lhs)}, g(p1×p2) = {fmt_vector(c.rhs)} "
+        f"(‖difference‖ = {fmt_residual(c.mismatch, scale * tol)} > {_allowed(scale, label)})"
+    )
+
+
+def _rigid_verdict(p1, p2, measured, tol):
+    """The RigidCheck of the measured mismatches: ✓, or the worst pair of the first failure."""
+    k = p1.shape[0]
+    label = tol_label(tol)
+    plural = "pair" if k == 1 else "pairs"
+    failed = [c for c, (mis, _, _, scale) in measured.items() if np.any(mis > tol * scale)]
+    if not failed:
+        return RigidCheck(
+            ok=True,
+            message=(
+                f"g is a rigid body transformation on these {k} sample {plural}: both conditions "
+                f"of Definition 1 hold within {label} (a sample can refute rigidity, never prove "
+                f"it)."
+            ),
+            n_pairs=k,
+        )
+    condition = failed[0]
+    mis, lhs, rhs, scale = measured[condition]
+    w = int(np.argmax(np.where(mis > tol * scale, mis, -1.0)))  # the worst failing pair
+    lhs, rhs = (float(lhs[w]), float(rhs[w])) if condition == "length" else (lhs[w], rhs[w])
+    c = Counterexample(p1[w], p2[w], lhs, rhs, float(mis[w]))
+    detail = _failure_message(condition, c, float(scale[w]), tol)
+    also = f"; {_CONDITIONS['cross product']} fails too" if len(failed) == 2 else ""
+    message = (
+        f"g fails {_CONDITIONS[condition]}: {detail} for p1 = {fmt_vector(c.p1)}, "
+        f"p2 = {fmt_vector(c.p2)}{also}; checked {k} sample {plural}."
+    )
+    return RigidCheck(ok=False, message=message, condition=condition, counterexample=c, n_pairs=k)
 
 
 def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
@@ -206,6 +308,11 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
 
         \| g(p_1) \times g(p_2) - g(p_1 \times p_2) \| \le \mathrm{tol}
         \quad\text{(condition 2, relative orientation between vectors)}
+
+    Beyond unit sizes the allowed mismatch grows with the sizes compared, tol ×
+    :math:`\|p_1 - p_2\|` and tol × :math:`\|p_1\|\|p_2\|`, because rounding does: a rotation
+    of points a million units away is still rigid. Points so large that :math:`p_1 \times p_2`
+    overflows float64 are refused (ValueError), not blamed on ``g``.
 
     A sample check can *refute* rigidity (one counterexample suffices) but never *prove* it:
     ``ok=True`` only means no sample pair failed. The proof for rotations is Proposition 7.
@@ -258,61 +365,32 @@ def check_rigid(g, points=None, n=50, seed=0, tol=TOL):
     >>> result.ok, result.condition
     (False, 'cross product')
     >>> print(result)
-    ✗ g fails condition 2 (relative orientation between vectors): g(p1)×g(p2) = [0., 0., 1.], g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.], p2 = [0., 1., 0.]; checked 6 sample pairs.
+    ✗ g fails condition 2 (relative orientation between vectors): g(p1)×g(p2) = [0., 0., 1.],
+    g(p1×p2) = [ 0.,  0., -1.] (‖difference‖ = 2.0e+00 > TOL = 1e-09) for p1 = [1., 0., 0.],
+    p2 = [0., 1., 0.]; checked 6 sample pairs.
     """
     if not callable(g):
-        raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
+        raise TypeError(
+            f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}"
+        )
     tol = check_tol(tol)
     p1, p2 = _pairs(points, n, seed)
-    k = p1.shape[0]
-    cross = np.cross(p1, p2)
-    image = _evaluate(g, np.concatenate([p1, p2, cross]), tol)
-    g1, g2, gc = image[:k], image[k : 2 * k], image[2 * k :]
+    _require_checkable(p1, p2)
+    image = _evaluate(g, np.concatenate([p1, p2, np.cross(p1, p2)]), tol)
+    return _rigid_verdict(p1, p2, _measure(p1, p2, image), tol)
 
-    len_lhs = np.linalg.norm(g1 - g2, axis=-1)
-    len_rhs = np.linalg.norm(p1 - p2, axis=-1)
-    len_mis = np.abs(len_lhs - len_rhs)
-    cross_lhs = np.cross(g1, g2)
-    cross_mis = np.linalg.norm(cross_lhs - gc, axis=-1)
 
-    label = tol_label(tol)
-    plural = "pair" if k == 1 else "pairs"
-    len_fail = bool(np.any(len_mis > tol))
-    cross_fail = bool(np.any(cross_mis > tol))
-    if not (len_fail or cross_fail):
-        return RigidCheck(
-            ok=True,
-            condition=None,
-            message=(
-                f"✓ g is a rigid body transformation on these {k} sample {plural}: both conditions "
-                f"of Definition 1 hold within {label} (a sample can refute rigidity, never prove it)."
-            ),
-            counterexample=None,
-            n_pairs=k,
+def _image(p, f, what):
+    """f(p) for the maps built here: a ValueError, not inf, if the image overflows float64."""
+    p = as_vectors(p, "p")
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = f(p)
+    if not np.isfinite(out).all():
+        raise ValueError(
+            f"{what} overflows float64: p is too far from the origin (a coordinate of the image "
+            f"would exceed 1.8e308)"
         )
-    if len_fail:
-        w = int(np.argmax(len_mis))
-        c = Counterexample(p1[w], p2[w], float(len_lhs[w]), float(len_rhs[w]), float(len_mis[w]))
-        condition = "length"
-        detail = (
-            f"‖g(p1) − g(p2)‖ = {c.lhs:.6g} but ‖p1 − p2‖ = {c.rhs:.6g} "
-            f"(mismatch {c.mismatch:.1e} > {label})"
-        )
-        also = f"; {_CONDITIONS['cross product']} fails too" if cross_fail else ""
-    else:
-        w = int(np.argmax(cross_mis))
-        c = Counterexample(p1[w], p2[w], cross_lhs[w], gc[w], float(cross_mis[w]))
-        condition = "cross product"
-        detail = (
-            f"g(p1)×g(p2) = {fmt_vector(c.lhs)}, g(p1×p2) = {fmt_vector(c.rhs)} "
-            f"(‖difference‖ = {c.mismatch:.1e} > {label})"
-        )
-        also = ""
-    message = (
-        f"✗ g fails {_CONDITIONS[condition]}: {detail} for p1 = {fmt_vector(c.p1)}, "
-        f"p2 = {fmt_vector(c.p2)}{also}; checked {k} sample {plural}."
-    )
-    return RigidCheck(ok=False, condition=condition, message=message, counterexample=c, n_pairs=k)
+    return out
 
 
 def rotation_map(R):
@@ -349,7 +427,7 @@ def rotation_map(R):
     R = R.copy()
 
     def g(p):
-        return as_vectors(p, "p") @ R.T
+        return _image(p, lambda q: q @ R.T, "R p")
 
     g.__name__ = "rotation_map"
     g.__doc__ = "p ↦ R p for R =\n" + np.array2string(R, precision=4)
@@ -359,7 +437,8 @@ def rotation_map(R):
 def reflection_map(normal):
     r"""The mirror across the plane through the origin with the given normal.
 
-    .. math:: g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
+    .. math::
+        g(p) = (I - 2\, n n^\mathsf{T})\, p, \qquad n = \frac{\text{normal}}{\|\text{normal}\|}
 
     It preserves lengths (condition 1) but reverses the relative orientation between vectors,
     so it fails condition 2 of Definition 1: with ``normal = (0, 0, 1)`` it is the notes'
@@ -378,7 +457,7 @@ def reflection_map(normal):
     Raises
     ------
     ValueError
-        If ``normal`` is not a finite nonzero 3-vector (‖normal‖ ≤ TOL).
+        If ``normal`` is not one finite 3-vector, or ‖normal‖ ≤ TOL (no direction).
 
     Examples
     --------
@@ -386,19 +465,11 @@ def reflection_map(normal):
     >>> g([1.0, 2.0, 3.0])
     array([ 1.,  2., -3.])
     """
-    n = as_vectors(normal, "normal")
-    if n.shape != (3,):
-        raise ValueError(f"normal must be one 3-vector, got shape {n.shape}")
-    length = float(np.linalg.norm(n))
-    if length <= TOL:
-        raise ValueError(
-            f"normal must be nonzero: ‖normal‖ = {length:.1e} ≤ TOL = {TOL:g}; pass the normal of the mirror plane"
-        )
-    n = n / length
+    n = as_direction(normal, "normal")
     M = np.eye(3) - 2.0 * np.outer(n, n)
 
     def g(p):
-        return as_vectors(p, "p") @ M.T
+        return _image(p, lambda q: q @ M.T, "the mirror image of p")
 
     g.__name__ = "reflection_map"
     g.__doc__ = f"p ↦ (I − 2nnᵀ) p for n = {fmt_vector(n)}"
@@ -435,13 +506,10 @@ def translation_map(d):
     >>> result.ok, result.condition
     (False, 'cross product')
     """
-    d = as_vectors(d, "d")
-    if d.shape != (3,):
-        raise ValueError(f"d must be one 3-vector, got shape {d.shape}")
-    d = d.copy()
+    d = as_vector3(d, "d").copy()
 
     def g(p):
-        return as_vectors(p, "p") + d
+        return _image(p, lambda q: q + d, "p + d")
 
     g.__name__ = "translation_map"
     g.__doc__ = f"p ↦ p + d for d = {fmt_vector(d)}"
@@ -496,7 +564,9 @@ def vector_map(g):
     (False, True)
     """
     if not callable(g):
-        raise TypeError(f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}")
+        raise TypeError(
+            f"g must be a callable mapping points of R³ to R³, got {type(g).__name__} {g!r}"
+        )
 
     def g_star(v):
         v = as_vectors(v, "v")

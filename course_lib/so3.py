@@ -22,6 +22,9 @@ contiguous rows, so a million rotations take a few tens of milliseconds
 (``benchmarks/bench_so3.py`` measures this against scipy).
 """
 
+import math
+import warnings
+
 import numpy as np
 
 from ._arrays import (
@@ -30,9 +33,12 @@ from ._arrays import (
     as_float_array,
     as_matrices,
     as_square_matrices,
+    as_unit_axes,
     as_vectors,
+    broadcast_batch,
+    frobenius_norm,
 )
-from .tolerance import TOL, check_tol, tol_label
+from .tolerance import TOL, check_tol, fmt_residual, tol_label
 
 __all__ = [
     "hat",
@@ -48,12 +54,44 @@ __all__ = [
     "check_rotation",
     "random_rotations",
     "angle_between",
+    "AccuracyWarning",
 ]
 
 # Elements per chunk: 9 rows of this many float64 stay well inside the L2 cache.
 _CHUNK = 8192
 # Below this, sin θ is treated as 0 (θ / sin θ = 1); keeps every division finite.
 _TINY = 1e-290
+# The most terms exp_series adds: beyond a few hundred every further term is below rounding
+# for any matrix whose series can be summed accurately in float64.
+_MAX_TERMS = 1000
+_F64 = np.dtype(np.float64)
+_NUMBER = (float, int)
+
+
+class AccuracyWarning(UserWarning):
+    """A result is finite but rounding has made it less accurate than the tolerance policy."""
+
+
+def _three_floats(w):
+    """(x, y, z) as Python floats for one finite float64 3-vector or list of 3 numbers, else None.
+
+    The small-input path: a single call skips numpy's batch machinery (conversion, chunking)
+    but not the validation, which it does on three floats.
+    """
+    if type(w) is np.ndarray:
+        if w.dtype is not _F64 or w.shape != (3,):
+            return None
+        x, y, z = w.tolist()
+    elif type(w) in (list, tuple) and len(w) == 3:
+        x, y, z = w
+        if type(x) not in _NUMBER or type(y) not in _NUMBER or type(z) not in _NUMBER:
+            return None
+        x, y, z = float(x), float(y), float(z)  # huge ints raise OverflowError: see caller
+    else:
+        return None
+    if x - x != 0.0 or y - y != 0.0 or z - z != 0.0:  # NaN or infinity: the full path explains
+        return None
+    return x, y, z
 
 
 def hat(w):
@@ -90,6 +128,13 @@ def hat(w):
     >>> np.allclose(hat([1, 2, 3]) @ v, np.cross([1, 2, 3], v))
     True
     """
+    try:
+        xyz = _three_floats(w)
+    except OverflowError:
+        xyz = None
+    if xyz is not None:
+        x, y, z = xyz
+        return np.array(((0.0, -z, y), (z, 0.0, -x), (-y, x, 0.0)))
     w = as_vectors(w, "w")
     W = np.zeros(w.shape + (3,))
     W[..., 0, 1] = -w[..., 2]
@@ -135,18 +180,37 @@ def vee(W, tol=TOL):
     """
     W = as_matrices(W, "W")
     tol = check_tol(tol)
-    sym = np.linalg.norm(W + np.swapaxes(W, -1, -2), axis=(-2, -1))
+    half = 0.5 * W  # ‖W + Wᵀ‖ would overflow for entries near 1e308: measure half of it
+    with np.errstate(over="ignore"):  # beyond 1.8e308 it is inf, and fails
+        sym = 2.0 * frobenius_norm(half + np.swapaxes(half, -1, -2))
     if not np.all(sym <= tol):
         worst = np.unravel_index(np.argmax(sym), sym.shape) if sym.ndim else ()
         raise ValueError(
-            f"W is not skew-symmetric: ‖W + Wᵀ‖ = {float(sym[worst]):.1e} > {tol_label(tol)}"
+            f"W is not skew-symmetric: ‖W + Wᵀ‖ = {fmt_residual(sym[worst], tol)} > "
+            f"{tol_label(tol)}"
             + (f" (at batch index {tuple(int(i) for i in worst)})" if worst else "")
             + "; vee expects a matrix of so(3), Wᵀ = −W, such as hat(w)"
         )
-    return 0.5 * np.stack(
-        [W[..., 2, 1] - W[..., 1, 2], W[..., 0, 2] - W[..., 2, 0], W[..., 1, 0] - W[..., 0, 1]],
-        axis=-1,
-    )
+    return _skew_vector(W)
+
+
+def _skew_vector(W):
+    """The vector of the skew part, (W − Wᵀ)^∨ / 2, without overflow near 1e308."""
+    pairs = ((2, 1, 1, 2), (0, 2, 2, 0), (1, 0, 0, 1))
+    with np.errstate(over="ignore"):
+        v = 0.5 * np.stack([W[..., i, j] - W[..., k, m] for i, j, k, m in pairs], axis=-1)
+    if not np.isfinite(v).all():  # a difference overflowed: halve first (exact at that size)
+        halved = np.stack([0.5 * W[..., i, j] - 0.5 * W[..., k, m] for i, j, k, m in pairs], -1)
+        v = np.where(np.isfinite(v), v, halved)
+    return v
+
+
+def _scaled_half_norm(x, y, z):
+    """‖r‖ / 2 for rows whose squared norm under- or overflows: scaled by the largest entry."""
+    r = np.stack([x, y, z])
+    big = np.abs(r).max(axis=0)
+    safe = np.where(big > 0, big, 1.0)
+    return (0.5 * big) * np.sqrt(((r / safe) ** 2).sum(axis=0))
 
 
 def _exp_rows(x, y, z, out):
@@ -159,21 +223,28 @@ def _exp_rows(x, y, z, out):
     theta2 = x * x
     theta2 += y * y
     theta2 += z * z
-    theta = np.sqrt(theta2)
-    zero = theta == 0.0
-    if zero.any() and (x[zero].any() or y[zero].any() or z[zero].any()):
-        # θ² underflowed for a rotation vector below 1e-154: recompute θ without squaring.
-        r = np.stack([x[zero], y[zero], z[zero]])
-        big = np.abs(r).max(axis=0)
-        theta[zero] = big * np.sqrt(((r / np.where(big > 0, big, 1.0)) ** 2).sum(axis=0))
-        zero = theta == 0.0
-    half = 0.5 * theta
+    half = np.sqrt(theta2)
+    half *= 0.5
+    # θ² underflows below 1e-154 and overflows above 1e154: recompute those without squaring.
+    # Two reductions tell whether any element needs it (a mask over all of them costs more).
+    low, high = theta2.min(initial=np.inf), theta2.max(initial=0.0)
+    if high == np.inf or low == 0.0:
+        rare = (theta2 == np.inf) | ((theta2 == 0.0) & ((x != 0.0) | (y != 0.0) | (z != 0.0)))
+        half[rare] = _scaled_half_norm(x[rare], y[rare], z[rare])
     sh, q0 = np.sin(half), np.cos(half)
-    theta += zero  # at θ = 0 exactly r = 0, so g's value does not matter: keep it finite
-    g = sh / theta
+    if low == 0.0:
+        half[half == 0.0] = 1.0  # there r = 0, so g's value does not matter: keep it finite
+    g = 0.5 * sh
+    g /= half  # g = sin h / θ
     vx, vy, vz = g * x, g * y, g * z  # v = sin h ω, the quaternion's vector part
     g += g
     ux, uy, uz = g * x, g * y, g * z  # u = 2v carries the factor 2 of 2 q₀ v̂ + 2 v̂²
+    _quaternion_rows(q0, (ux, uy, uz), (vx, vy, vz), out)
+
+
+def _quaternion_rows(q0, u, v, out):
+    """R = I + 2 q₀ v̂ + 2 v̂² from q₀ and u = 2v, v, into the 9 rows of ``out``."""
+    (ux, uy, uz), (vx, vy, vz) = u, v
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
     wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
@@ -195,16 +266,66 @@ def _exp_rotvec(r):
     n = flat.shape[0]
     out = np.empty((n, 9))
     buf = np.empty((9, min(n, _CHUNK)))
-    for start in range(0, n, _CHUNK):
-        stop = min(start + _CHUNK, n)
-        rows = flat[start:stop].T
-        b = buf[:, : stop - start]
-        _exp_rows(rows[0], rows[1], rows[2], b)
-        out[start:stop] = b.T
+    with np.errstate(over="ignore"):  # θ² may overflow: _exp_rows then takes the scaled path
+        for start in range(0, n, _CHUNK):
+            stop = min(start + _CHUNK, n)
+            rows = flat[start:stop].T
+            b = buf[:, : stop - start]
+            _exp_rows(rows[0], rows[1], rows[2], b)
+            out[start:stop] = b.T
     return out.reshape(batch + (3, 3))
 
 
-def exp(w, theta=None):
+def _exp_one(x, y, z):
+    """exp of one rotation vector given as three finite floats: the formulas of _exp_rows."""
+    half = 0.5 * math.hypot(x, y, z)  # no overflow: hypot scales
+    if half == math.inf:
+        half = math.hypot(0.5 * x, 0.5 * y, 0.5 * z)
+    sh, q0 = math.sin(half), math.cos(half)
+    g = 0.5 * sh / half if half else 0.0
+    vx, vy, vz = g * x, g * y, g * z
+    g += g
+    ux, uy, uz = g * x, g * y, g * z
+    xx, yy, zz = ux * vx, uy * vy, uz * vz
+    xy, xz, yz = ux * vy, ux * vz, uy * vz
+    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
+    return np.array(
+        (
+            1.0 - (yy + zz),
+            xy - wz,
+            xz + wy,
+            xy + wz,
+            1.0 - (xx + zz),
+            yz - wx,
+            xz - wy,
+            yz + wx,
+            1.0 - (xx + yy),
+        )
+    ).reshape(3, 3)
+
+
+def _exp_single(w, theta, tol):
+    """The small-input path of exp: one vector (and one angle), or None to take the batch path."""
+    try:
+        xyz = _three_floats(w)
+    except OverflowError:
+        return None
+    if xyz is None:
+        return None
+    x, y, z = xyz
+    if type(tol) is not float or not 0.0 <= tol < 1.0:
+        return None
+    if theta is None:
+        return _exp_one(x, y, z)
+    if type(theta) not in _NUMBER:
+        return None
+    theta = float(theta) if -1e300 < theta < 1e300 else None
+    if theta is None or not abs(math.hypot(x, y, z) - 1.0) <= tol:
+        return None  # the batch path raises the ValueError (or handles the huge angle)
+    return _exp_one(x * theta, y * theta, z * theta)
+
+
+def exp(w, theta=None, tol=TOL):
     r"""Rodrigues' formula: the rotation matrix :math:`e^{\hat\omega\theta}`.
 
     With one argument, ``w`` is a rotation vector :math:`r = \omega\theta` (unit axis times
@@ -224,17 +345,21 @@ def exp(w, theta=None):
         Rotation vectors, or unit axes when ``theta`` is given.
     theta : array_like, optional
         Angles in radians, broadcast against the batch shape of ``w``.
+    tol : float, optional
+        With ``theta``: how far ``‖w‖`` may be from 1, default :data:`~course_lib.tolerance.TOL`.
 
     Returns
     -------
     ndarray, shape (..., 3, 3)
-        Rotation matrices, orthogonal to a few machine epsilons.
+        Rotation matrices, orthogonal to a few machine epsilons, for every finite input (the
+        norm is taken without squaring, so ``exp([2e154, 0, 0])`` is a rotation, not NaN).
 
     Raises
     ------
     ValueError
         If ``theta`` is given and an axis is not a unit vector (the message gives its norm),
-        if a shape is wrong, or an input holds NaN or infinity.
+        if a shape is wrong or the batches of ``w`` and ``theta`` do not broadcast, or an input
+        holds NaN or infinity.
 
     Examples
     --------
@@ -246,21 +371,35 @@ def exp(w, theta=None):
     >>> np.allclose(exp([0, 0, np.pi / 2]), R)
     True
     """
-    w = as_vectors(w, "w")
+    if (
+        theta is None
+        and tol is TOL
+        and type(w) is np.ndarray
+        and w.shape == (3,)
+        and w.dtype is _F64
+    ):
+        x, y, z = w.tolist()  # the common single call, inlined: validation is the next line
+        if x - x == 0.0 and y - y == 0.0 and z - z == 0.0:
+            return _exp_one(x, y, z)
+    R = _exp_single(w, theta, tol)
+    if R is not None:
+        return R
+    tol = check_tol(tol)
     if theta is None:
-        return _exp_rotvec(w)
+        return _exp_rotvec(as_vectors(w, "w"))
+    w = as_unit_axes(
+        w, "w", tol, "normalise the axis, w / ‖w‖, or pass the rotation vector w·theta alone"
+    )
     theta = as_angles(theta, "theta")
-    norm = np.linalg.norm(w, axis=-1)
-    off = np.abs(norm - 1.0)
-    if not np.all(off <= TOL):
-        worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
+    broadcast_batch(("w", w, 1), ("theta", theta, 0))
+    with np.errstate(over="ignore"):
+        r = w * theta[..., None]
+    if not np.isfinite(r).all():
         raise ValueError(
-            f"with theta given, w must be a unit axis: ‖w‖ = {float(norm[worst]):.6g} "
-            f"(|‖w‖ − 1| = {float(off[worst]):.1e} > {tol_label(TOL)})"
-            + (f" at batch index {tuple(int(i) for i in worst)}" if worst else "")
-            + "; normalise the axis, w / ‖w‖, or pass the rotation vector w·theta alone"
+            f"w·theta overflows float64 (|theta| up to {np.abs(theta).max():.3g}); reduce theta "
+            f"modulo 2π first"
         )
-    return _exp_rotvec(w * theta[..., None])
+    return _exp_rotvec(r)
 
 
 def _residual_rows(X):
@@ -273,8 +412,10 @@ def _residual_rows(X):
     g02 = r00 * r02 + r10 * r12 + r20 * r22
     g12 = r01 * r02 + r11 * r12 + r21 * r22
     orth2 = g00 * g00 + g11 * g11 + g22 * g22 + 2.0 * (g01 * g01 + g02 * g02 + g12 * g12)
-    det = r00 * (r11 * r22 - r21 * r12) - r10 * (r01 * r22 - r21 * r02) + r20 * (
-        r01 * r12 - r11 * r02
+    det = (
+        r00 * (r11 * r22 - r21 * r12)
+        - r10 * (r01 * r22 - r21 * r02)
+        + r20 * (r01 * r12 - r11 * r02)
     )
     return orth2, det
 
@@ -285,8 +426,15 @@ def _rotation_error(R, index, tol, name):
     where = f" (at batch index {index})" if len(index) else ""
     if not np.all(np.isfinite(M)):
         return ValueError(f"{name} contains NaN or infinity{where}; expected a finite 3x3 matrix")
-    orth = float(np.linalg.norm(M.T @ M - np.eye(3)))
-    det = float(np.linalg.det(M))
+    with np.errstate(all="ignore"):  # entries near 1e308: inf, no warning
+        orth = float(frobenius_norm(M.T @ M - np.eye(3)))
+        det = float(np.linalg.det(M))
+    if not (math.isfinite(det) and math.isfinite(orth)):
+        return ValueError(
+            f"{name} is not a rotation: its entries are so large{where} (up to "
+            f"{np.abs(M).max():.3g}) that {name}ᵀ{name} overflows float64; a rotation has "
+            f"entries in [−1, 1]"
+        )
     if det < 0 and abs(det + 1.0) <= tol and orth <= tol:
         return ValueError(
             f"{name} is a reflection, not a rotation: det({name}) = {det:.6g}{where}; a rotation "
@@ -294,21 +442,24 @@ def _rotation_error(R, index, tol, name):
         )
     if orth > tol:
         return ValueError(
-            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {orth:.1e} > {tol_label(tol)}"
+            f"{name} is not a rotation: ‖{name}ᵀ{name} − I‖ = {fmt_residual(orth, tol)} > "
+            f"{tol_label(tol)}"
             f"{where} (det = {det:.6g}); its columns are not orthonormal. If it is a rotation "
             f"with rounded entries, re-orthonormalise it (e.g. U Vᵀ from its SVD) or pass a "
             f"larger tol"
         )
     return ValueError(
-        f"{name} is not a rotation: det({name}) = {det:.6g}, |det − 1| = {abs(det - 1):.1e} > "
+        f"{name} is not a rotation: det({name}) = {det:.6g}, "
+        f"|det − 1| = {fmt_residual(abs(det - 1), tol)} > "
         f"{tol_label(tol)}{where}; a rotation has det = +1"
     )
 
 
 def _check_chunk(R, X, start, tol, name):
     """Raise the ValueError of the first matrix of a chunk (entry rows X) not in SO(3)."""
-    orth2, det = _residual_rows(X)
-    ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
+    with np.errstate(over="ignore", invalid="ignore"):  # huge entries fail, without a warning
+        orth2, det = _residual_rows(X)
+        ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
     if not ok.all():
         bad = start + int(np.argmin(ok))
         index = np.unravel_index(bad, R.shape[:-2]) if R.ndim > 2 else ()
@@ -385,7 +536,42 @@ def _log_rows(X, out, want_axis):
     return theta
 
 
+def _log_one(X, tol, want_axis):
+    """log (or axis, angle) of one matrix given as its 9 entries, Python floats; None if it is
+    not a rotation within tol (the batch path then raises the ValueError). Same formulas as
+    _residual_rows and _log_rows."""
+    orth2, det = _residual_rows(X)  # plain arithmetic: the same code on 9 floats
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
+    if not (orth2 <= tol * tol and abs(det - 1.0) <= tol):  # NaN fails here too
+        return None
+    c = 0.5 * (r00 + r11 + r22 - 1.0)
+    v0, v1, v2 = 0.5 * (r21 - r12), 0.5 * (r02 - r20), 0.5 * (r10 - r01)
+    s = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
+    theta = math.atan2(s, c)
+    if c >= 0.0:  # up to 90°: r = θ v / sin θ
+        if s < _TINY:
+            return (0.0, 0.0, 1.0) if want_axis else (0.0, 0.0, 0.0), theta
+        k = (1.0 if want_axis else theta) / s
+        return (k * v0, k * v1, k * v2), theta
+    # beyond 90°: the dominant column of N = R + Rᵀ − 2cI, signed by v
+    d0, d1, d2 = r00 - c, r11 - c, r22 - c
+    n01, n02, n12 = r01 + r10, r02 + r20, r12 + r21
+    if d0 >= d1 and d0 >= d2:
+        u = (d0 + d0, n01, n02)
+    elif d1 >= d2:
+        u = (n01, d1 + d1, n12)
+    else:
+        u = (n02, n12, d2 + d2)
+    norm = math.sqrt(max(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], _TINY))
+    k = math.copysign((1.0 if want_axis else theta) / norm, u[0] * v0 + u[1] * v1 + u[2] * v2)
+    return (k * u[0], k * u[1], k * u[2]), theta
+
+
 def _log_impl(R, tol, name, want_axis):
+    if type(R) is np.ndarray and R.shape == (3, 3) and R.dtype is _F64 and type(tol) is float:
+        one = _log_one(R.ravel().tolist(), tol, want_axis)
+        if one is not None:
+            return np.array(one[0]), np.float64(one[1])
     R = as_matrices(R, name, finite=False)  # NaN and infinity fail the residual check below
     tol = check_tol(tol)
     batch = R.shape[:-2]
@@ -498,7 +684,13 @@ def exp_series(A, terms):
     Raises
     ------
     ValueError
-        If ``terms`` < 1 or ``A`` is not square.
+        If ``terms`` is not between 1 and 1000, ``A`` is not square, or the sum overflows.
+
+    Warns
+    -----
+    AccuracyWarning
+        When the terms grow so large before they shrink that rounding alone leaves an error
+        above ``TOL`` (e.g. ``hat([0, 0, 30])``, whose largest term is about 8e11).
 
     Examples
     --------
@@ -510,13 +702,31 @@ def exp_series(A, terms):
            [0., 1.]])
     """
     A = as_square_matrices(A, "A")
-    terms = as_count(terms, "terms", minimum=1)
+    terms = as_count(terms, "terms", minimum=1, maximum=_MAX_TERMS)
     n = A.shape[-1]
     term = np.broadcast_to(np.eye(n), A.shape).copy()
     total = term.copy()
-    for k in range(1, terms):
-        term = term @ A / k
-        total += term
+    largest = 1.0  # the largest ‖term‖_F: rounding leaves about eps times it in the sum
+    with np.errstate(over="ignore", invalid="ignore"):
+        for k in range(1, terms):
+            term = term @ A / k
+            total += term
+            largest = max(largest, float(np.max(frobenius_norm(term), initial=0.0)))
+    if not np.isfinite(total).all():
+        raise ValueError(
+            f"the series of A overflows float64 within {terms} terms (‖A‖_F up to "
+            f"{float(np.max(frobenius_norm(A), initial=0.0)):.3g}); use exp for rotations, or "
+            f"scale A down"
+        )
+    lost = np.finfo(np.float64).eps * largest * n
+    if lost > TOL:
+        warnings.warn(
+            f"exp_series: the largest term has ‖A^k/k!‖_F = {largest:.3g}, so rounding alone "
+            f"leaves errors up to about {lost:.1e} > {tol_label(TOL)} in the sum, however many "
+            f"terms are added (cancellation); for a rotation use exp, which is accurate",
+            AccuracyWarning,
+            stacklevel=2,
+        )
     return total
 
 
@@ -679,7 +889,8 @@ def check_rotation(R, tol=TOL, name="R"):
     >>> check_rotation(np.diag([1.0, 1.0, -1.0]))
     Traceback (most recent call last):
     ...
-    ValueError: R is a reflection, not a rotation: det(R) = -1; a rotation has det = +1 (flip the sign of one column to make a right-handed frame)
+    ValueError: R is a reflection, not a rotation: det(R) = -1; a rotation has det = +1
+    (flip the sign of one column to make a right-handed frame)
     """
     R = as_matrices(R, name)
     tol = check_tol(tol)
@@ -744,12 +955,15 @@ def angle_between(R1, R2, tol=TOL):
     --------
     >>> float(angle_between(np.eye(3), rot_z(1e-12)))
     1e-12
+    >>> float(angle_between(np.eye(3), rot_z(1e-170)))   # no arccos: no loss near 0
+    1e-170
     >>> round(float(angle_between(np.eye(3), rot_x(np.pi))), 12)
     3.14159265359
     """
     R1 = check_rotation(R1, tol, "R1")
     R2 = check_rotation(R2, tol, "R2")
-    d = np.linalg.norm(R1 - R2, axis=(-2, -1)) / (2.0 * np.sqrt(2.0))
+    broadcast_batch(("R1", R1, 2), ("R2", R2, 2))
+    d = frobenius_norm(R1 - R2) / (2.0 * np.sqrt(2.0))
     small = 2.0 * np.arcsin(np.minimum(d, 1.0))
     M = np.swapaxes(R1, -1, -2) @ R2
     c = 0.5 * (np.trace(M, axis1=-2, axis2=-1) - 1.0)

@@ -68,7 +68,9 @@ def test_change_frame_notes_example_eq65_to_eq68():
     v_a = change_frame(R_AC, [1, 1, 3])
     assert v_a.dtype == np.float64 and v_a.shape == (3,)
     assert np.linalg.norm(v_a - np.array([0.0, np.sqrt(2.0), 3.0])) <= TOL
-    assert np.linalg.norm(v_a - np.array([0.0, 2 / np.sqrt(2.0), 3.0])) <= TOL  # eq. (68) as printed
+    assert (
+        np.linalg.norm(v_a - np.array([0.0, 2 / np.sqrt(2.0), 3.0])) <= TOL
+    )  # eq. (68) as printed
 
 
 def test_change_frame_is_the_combination_of_body_axes_eq62():
@@ -275,7 +277,10 @@ def test_notes_rounded_entries_of_eq28_pass():
     assert is_orthonormal(rounded) and is_right_handed(rounded)
 
 
-@pytest.mark.parametrize("tol, exc", [(-1e-9, ValueError), (float("nan"), ValueError), ("1e-9", TypeError), (True, TypeError)])
+@pytest.mark.parametrize(
+    "tol, exc",
+    [(-1e-9, ValueError), (float("nan"), ValueError), ("1e-9", TypeError), (True, TypeError)],
+)
 def test_bad_tol_is_refused(tol, exc):
     with pytest.raises(exc, match="tol must be"):
         is_orthonormal(np.eye(3), tol=tol)
@@ -313,7 +318,9 @@ def test_ragged_frame_is_a_value_error():
 def test_frame_from_vectors_refuses_bad_vectors():
     with pytest.raises(ValueError, match=r"e2 must have shape \(\.\.\., 3\)"):
         frame_from_vectors([1, 0, 0], [0, 1], [0, 0, 1])
-    with pytest.raises(ValueError, match="broadcastable"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast: e1 has shape \(2, 3\) .*e2 has shape \(5, 3\)"
+    ):
         frame_from_vectors(np.zeros((2, 3)), np.zeros((5, 3)), [0, 0, 1])
     with pytest.raises(ValueError, match="e3 contains NaN"):
         frame_from_vectors([1, 0, 0], [0, 1, 0], [0, 0, np.inf])
@@ -358,7 +365,9 @@ def test_coordinates_refuses_bad_origins():
         coordinates([1, 2, 3], np.eye(3), origin=[0, np.inf, 0])
     with pytest.raises(TypeError, match="origin must be an array of real numbers"):
         coordinates([1, 2, 3], np.eye(3), origin="o_B")
-    with pytest.raises(ValueError, match="p and origin batches do not broadcast"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast: p has shape \(2, 3\) .*origin has shape \(3, 3\)"
+    ):
         coordinates(np.zeros((2, 3)), np.eye(3), origin=np.zeros((3, 3)))
 
 
@@ -369,7 +378,9 @@ def test_coordinates_refuses_bad_points_and_frames():
         coordinates([1, np.nan, 2], np.eye(3))
     with pytest.raises(ValueError, match="not orthonormal"):
         coordinates([1, 2, 3], 2 * np.eye(3))
-    with pytest.raises(ValueError, match="do not broadcast"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast: p has shape \(2, 3\) .*frame has shape \(3, 3, 3\)"
+    ):
         coordinates(np.zeros((2, 3)), so3.random_rotations(3, seed=0))
 
 
@@ -380,12 +391,16 @@ def test_change_frame_refuses_bad_input():
         change_frame(np.eye(3), ["1", "2", "3"])
     with pytest.raises(ValueError, match="R_ab"):
         change_frame(np.eye(2), [1, 2, 3])
-    with pytest.raises(ValueError, match="do not broadcast"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast: R_ab has shape \(2, 3, 3\) .*v_b has shape \(3, 3\)"
+    ):
         change_frame(so3.random_rotations(2, seed=0), np.zeros((3, 3)))
 
 
 def test_rotation_from_axes_refuses_bad_shapes():
     with pytest.raises(ValueError, match=r"z_ab must have shape \(\.\.\., 3\)"):
         rotation_from_axes([1, 0, 0], [0, 1, 0], [0, 1])
-    with pytest.raises(ValueError, match="broadcastable"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast: x_ab has shape \(2, 3\) .*y_ab has shape \(3, 3\)"
+    ):
         rotation_from_axes(np.zeros((2, 3)), np.zeros((3, 3)), [0, 0, 1])

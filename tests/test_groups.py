@@ -20,7 +20,9 @@ from course_lib.groups import (
 )
 from course_lib.tolerance import TOL
 
-Z4 = dict(elements=[0, 1, 2, 3], op=lambda a, b: (a + b) % 4, identity=0, inverse=lambda a: (-a) % 4)
+Z4 = dict(
+    elements=[0, 1, 2, 3], op=lambda a, b: (a + b) % 4, identity=0, inverse=lambda a: (-a) % 4
+)
 
 
 def axioms_failed(result):
@@ -63,7 +65,11 @@ def test_so3_addition_fails_closure_with_I_plus_I_det_8():
 def test_so3_addition_fails_identity_and_inverse_only_by_membership():
     result = check_group(**so3_addition())
     identity = [f for f in result.failures if f.axiom == "identity"]
-    assert len(identity) == 1 and "the identity e = " in identity[0].message and "(det = 0)" in identity[0].message
+    assert (
+        len(identity) == 1
+        and "the identity e = " in identity[0].message
+        and "(det = 0)" in identity[0].message
+    )
     inverse = [f for f in result.failures if f.axiom == "inverse"]
     assert all("g⁻¹ = " in f.message and "(det = -1)" in f.message for f in inverse)
     assert all("≠ e" not in f.message for f in inverse)  # R + (−R) = 0 = e does hold
@@ -113,7 +119,11 @@ def test_wrong_identity_is_reported():
 
 def test_subtraction_is_not_associative():
     result = check_group(
-        [0.0, 1.0, 2.5, -4.0], op=operator.sub, identity=0.0, inverse=lambda a: a, member=lambda x: True
+        [0.0, 1.0, 2.5, -4.0],
+        op=operator.sub,
+        identity=0.0,
+        inverse=lambda a: a,
+        member=lambda x: True,
     )
     assert "associativity" in axioms_failed(result)
     f = next(f for f in result.failures if f.axiom == "associativity")
@@ -138,17 +148,37 @@ def test_failures_are_tuples_in_the_notes_order():
 
 def test_default_equality_is_absolute_TOL():
     near = [0.0, 1.0]
-    exact = check_group(near, op=lambda a, b: a + b + 1e-12, identity=0.0, inverse=operator.neg, member=lambda x: True)
+    exact = check_group(
+        near,
+        op=lambda a, b: a + b + 1e-12,
+        identity=0.0,
+        inverse=operator.neg,
+        member=lambda x: True,
+    )
     assert exact.ok
-    off = check_group(near, op=lambda a, b: a + b + 1e-6, identity=0.0, inverse=operator.neg, member=lambda x: True)
+    off = check_group(
+        near,
+        op=lambda a, b: a + b + 1e-6,
+        identity=0.0,
+        inverse=operator.neg,
+        member=lambda x: True,
+    )
     assert not off.ok
-    assert check_group(near, op=lambda a, b: a + b + 1e-6, identity=0.0, inverse=operator.neg,
-                       member=lambda x: True, tol=1e-5).ok
+    assert check_group(
+        near,
+        op=lambda a, b: a + b + 1e-6,
+        identity=0.0,
+        inverse=operator.neg,
+        member=lambda x: True,
+        tol=1e-5,
+    ).ok
 
 
 def test_many_elements_are_sampled_with_a_seed():
     elements = list(range(12))
-    kwargs = dict(op=lambda a, b: (a + b) % 12, identity=0, inverse=lambda a: (-a) % 12, max_samples=100)
+    kwargs = dict(
+        op=lambda a, b: (a + b) % 12, identity=0, inverse=lambda a: (-a) % 12, max_samples=100
+    )
     a = check_group(elements, seed=3, **kwargs)
     b = check_group(elements, seed=3, **kwargs)
     assert a.ok and a.counts["associativity"] == 100 and a.counts["closure"] == 100
@@ -160,8 +190,12 @@ def test_many_elements_are_sampled_with_a_seed():
 def test_custom_equal_is_used():
     # integers mod 3 compared by residue: 5 and 2 are the same element
     result = check_group(
-        [0, 1, 2], op=operator.add, identity=0, inverse=operator.neg,
-        equal=lambda a, b: (a - b) % 3 == 0, member=lambda x: isinstance(x, int),
+        [0, 1, 2],
+        op=operator.add,
+        identity=0,
+        inverse=operator.neg,
+        equal=lambda a, b: (a - b) % 3 == 0,
+        member=lambda x: isinstance(x, int),
     )
     assert result.ok
 
@@ -176,10 +210,14 @@ def test_any_sample_of_rotations_passes_all_axioms(seed):
 
 
 @settings(deadline=None)
-@given(st.lists(st.floats(-1e3, 1e3, allow_nan=False, allow_infinity=False), min_size=1, max_size=5))
+@given(
+    st.lists(st.floats(-1e3, 1e3, allow_nan=False, allow_infinity=False), min_size=1, max_size=5)
+)
 def test_any_sample_of_reals_passes_all_axioms_under_addition(xs):
     sample = real_addition()
-    result = check_group(xs, op=sample.op, identity=sample.identity, inverse=sample.inverse, member=sample.member)
+    result = check_group(
+        xs, op=sample.op, identity=sample.identity, inverse=sample.inverse, member=sample.member
+    )
     assert result.ok, result.message
 
 
@@ -200,8 +238,10 @@ def test_scaled_rotations_are_never_closed(seed, c):
 def test_display_of_a_pass():
     result = check_group(**real_addition(n=3))
     assert isinstance(result, GroupCheck) and bool(result) is True
-    assert str(result) == result.message
-    assert result.message.startswith("✓ (ℝ, +) passes all four group axioms on 3 sample elements, 9 pairs, 27 triples")
+    assert str(result) == "✓ " + result.message
+    assert result.message.startswith(
+        "(ℝ, +) passes all four group axioms on 3 sample elements, 9 pairs, 27 triples"
+    )
     assert "never prove" in result.message
     assert result._repr_markdown_().startswith("**✓")
     assert repr(result) == "GroupCheck(name='(ℝ, +)', ok=True, failed_axioms=[], n_failures=0)"
@@ -210,13 +250,20 @@ def test_display_of_a_pass():
 def test_display_of_a_failure():
     result = check_group(**so3_addition(n=2))
     assert bool(result) is False
-    head = result.message.splitlines()[0]
-    assert head == "✗ (SO(3), +) is not a group: fails 1 (closure), 2 (identity), 3 (inverse) on 2 sample elements, 4 pairs, 8 triples."
-    assert "- axiom 1 (closure), 4 failures, e.g. g1 ∘ g2 = [[2., 0., 0.], [0., 2., 0.], [0., 0., 2.]] (det = 8)" in result.message
+    head = str(result).splitlines()[0]
+    assert head == (
+        "✗ (SO(3), +) is not a group: fails 1 (closure), 2 (identity), 3 (inverse) "
+        "on 2 sample elements, 4 pairs, 8 triples."
+    )
+    assert (
+        "- axiom 1 (closure), 4 failures, e.g. g1 ∘ g2 = [[2., 0., 0.], [0., 2., 0.], "
+        "[0., 0., 2.]] (det = 8)" in result.message
+    )
     md = result._repr_markdown_()
     assert md.startswith("**✗") and md.count("\n- axiom") == 3
     assert repr(result) == (
-        "GroupCheck(name='(SO(3), +)', ok=False, failed_axioms=['closure', 'identity', 'inverse'], n_failures=7)"
+        "GroupCheck(name='(SO(3), +)', ok=False, "
+        "failed_axioms=['closure', 'identity', 'inverse'], n_failures=7)"
     )
 
 
@@ -236,8 +283,13 @@ def test_group_sample_unpacks_into_check_group_and_is_frozen():
 
 def test_elements_must_be_members():
     with pytest.raises(ValueError, match=r"elements\[1\] = .*\(det = 8\) is not a member"):
-        check_group([np.eye(3), 2 * np.eye(3)], op=np.matmul, identity=np.eye(3), inverse=np.transpose,
-                    member=so3.is_rotation)
+        check_group(
+            [np.eye(3), 2 * np.eye(3)],
+            op=np.matmul,
+            identity=np.eye(3),
+            inverse=np.transpose,
+            member=so3.is_rotation,
+        )
 
 
 def test_empty_elements_are_refused():
@@ -254,8 +306,13 @@ def test_non_callables_are_refused(field):
 
 def test_member_and_equal_must_return_bools():
     with pytest.raises(TypeError, match="member must return a bool, got ndarray"):
-        check_group([np.eye(3)], op=np.matmul, identity=np.eye(3), inverse=np.transpose,
-                    member=lambda x: np.isfinite(x))
+        check_group(
+            [np.eye(3)],
+            op=np.matmul,
+            identity=np.eye(3),
+            inverse=np.transpose,
+            member=lambda x: np.isfinite(x),
+        )
     with pytest.raises(TypeError, match="equal must return a bool, got str"):
         check_group(**Z4, equal=lambda a, b: "yes")
 

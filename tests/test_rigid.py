@@ -75,7 +75,9 @@ def test_translation_preserves_length_but_fails_condition_2_as_stated_on_points(
     c = result.counterexample
     expected_lhs = np.cross(c.p1 + d, c.p2 + d)
     expected_rhs = np.cross(c.p1, c.p2) + d
-    assert np.linalg.norm(c.lhs - expected_lhs) <= TOL and np.linalg.norm(c.rhs - expected_rhs) <= TOL
+    assert (
+        np.linalg.norm(c.lhs - expected_lhs) <= TOL and np.linalg.norm(c.rhs - expected_rhs) <= TOL
+    )
     doc = " ".join(check_rigid.__doc__.split())  # the notes' slip is documented
     assert "applies the cross product to" in doc and "translation" in doc
 
@@ -84,7 +86,11 @@ def test_scaling_fails_condition_1_with_both_lengths_in_the_message():
     result = check_rigid(lambda p: 2 * np.asarray(p), points=[[0, 0, 0], [3, 4, 0]])
     assert not result.ok and result.condition == "length"
     c = result.counterexample
-    assert c.lhs == pytest.approx(10.0) and c.rhs == pytest.approx(5.0) and c.mismatch == pytest.approx(5.0)
+    assert (
+        c.lhs == pytest.approx(10.0)
+        and c.rhs == pytest.approx(5.0)
+        and c.mismatch == pytest.approx(5.0)
+    )
     assert "condition 1 (length)" in result.message
     assert "‖g(p1) − g(p2)‖ = 10 but ‖p1 − p2‖ = 5" in result.message
     assert "mismatch 5.0e+00 > TOL = 1e-09" in result.message
@@ -197,8 +203,8 @@ def test_tolerance_is_absolute_TOL_by_default_and_can_be_passed():
 
 def test_display_of_a_pass():
     result = check_rigid(rotation_map(R_Z90), n=12)
-    assert str(result) == result.message
-    assert result.message.startswith("✓ g is a rigid body transformation on these 12 sample pairs")
+    assert str(result) == "✓ " + result.message
+    assert result.message.startswith("g is a rigid body transformation on these 12 sample pairs")
     assert "never prove" in result.message
     assert result._repr_markdown_().startswith("**✓")
     assert repr(result) == "RigidCheck(ok=True, condition=None, n_pairs=12, mismatch=None)"
@@ -210,8 +216,13 @@ def test_display_of_a_failure():
     assert str(result).startswith("✗ g fails condition 2 (relative orientation between vectors)")
     md = result._repr_markdown_()
     assert md.startswith("**✗") and "| mismatch | 2.0e+00 |" in md and "$p_1$" in md
-    assert repr(result) == "RigidCheck(ok=False, condition='cross product', n_pairs=6, mismatch=2.0e+00)"
-    assert "\n" not in repr(result.counterexample) and "mismatch=2.0e+00" in repr(result.counterexample)
+    assert (
+        repr(result)
+        == "RigidCheck(ok=False, condition='cross product', n_pairs=6, mismatch=2.0e+00)"
+    )
+    assert "\n" not in repr(result.counterexample) and "mismatch=2.0e+00" in repr(
+        result.counterexample
+    )
     assert bool(result) is False
     assert isinstance(result, RigidCheck) and isinstance(result.counterexample, Counterexample)
 
@@ -251,7 +262,9 @@ def test_batched_callable_dropping_points_is_refused():
         P = np.asarray(P)
         return P if len(calls) == 1 else P[:-1]  # right on the probe, wrong afterwards
 
-    with pytest.raises(ValueError, match=r"one 3-vector per point.*shape \(8, 3\), expected \(9, 3\)"):
+    with pytest.raises(
+        ValueError, match=r"one 3-vector per point.*shape \(8, 3\), expected \(9, 3\)"
+    ):
         check_rigid(g, n=3)
 
 
@@ -301,7 +314,10 @@ def test_map_builders_refuse_bad_input():
         rotation_map(np.diag([1.0, 1.0, -1.0]))
     with pytest.raises(ValueError, match="one 3x3 rotation"):
         rotation_map(so3.random_rotations(2, seed=0))
-    with pytest.raises(ValueError, match=r"normal must be nonzero: ‖normal‖ = 0\.0e\+00"):
+    with pytest.raises(
+        ValueError,
+        match=r"normal must be non-zero to define a direction: ‖normal‖ = 0\.0e\+00 ≤ TOL",
+    ):
         reflection_map([0, 0, 0])
     with pytest.raises(ValueError, match="normal must be one 3-vector"):
         reflection_map(np.eye(3))
@@ -326,7 +342,7 @@ def test_docstrings_name_condition_2_as_the_notes_do():
         assert "preserves orientation" not in text and "reverses orientation" not in text
 
 
-# ------------------------------------------------------------------ vector_map: g_*(v) = g(v) − g(0)
+# ------------------------------------------------------------- vector_map: g_*(v) = g(v) − g(0)
 
 
 @settings(max_examples=30, deadline=None)

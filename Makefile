@@ -22,8 +22,8 @@ lab: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest
 
-# Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium);
-# screenshots in build/e2e/.
+# Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium): outputs,
+# math, figures, every slider and a mouse drag of each explorer's 3D view; screenshots in build/e2e/.
 e2e: $(STAMP)
 	$(BIN)/python e2e/run_e2e.py
 

@@ -87,6 +87,8 @@ VIEW_AZIM = -60.0
 
 _SLIDER_STEP = 0.01
 _EXPLORER_SIZE = (5.2, 4.8)  # inches at plotting.DPI: 520 x 480 px on the page
+# Turned by the mouse to look from below, the cube's tick labels go to its top: a little
+# smaller, it keeps them clear of the title at every camera.
 _EXPLORER_ZOOM = 0.9
 _SNAPSHOT_COLORS = 96
 
@@ -501,6 +503,8 @@ class Explorer(ipywidgets.VBox):
     ax : mpl_toolkits.mplot3d.axes3d.Axes3D
     readout : ipywidgets.HTMLMath or None
         A formula below the figure, rewritten on every redraw.
+    result : numpy.ndarray
+        What the current drawing computed (the rotation, or the Rodrigues vectors).
     description : str
         One line saying what the explorer shows: the text pages without widgets display.
     """
@@ -513,9 +517,7 @@ class Explorer(ipywidgets.VBox):
         self.figure = _canvas_figure(_EXPLORER_SIZE)
         self.figure.subplots_adjust(left=0.0, right=0.94, bottom=0.02, top=0.86)
         self.ax = self.figure.add_subplot(projection="3d")
-        # Turned by the mouse to look from below, the cube's tick labels go to its top: a little
-        # smaller, it keeps them clear of the title at every camera.
-        self._zoom = _EXPLORER_ZOOM
+        self._drawn = None
         self.description = description
         self._draw, self._pick, self._title, self._lim = draw, pick, title, lim
         self._readout = readout
@@ -523,6 +525,7 @@ class Explorer(ipywidgets.VBox):
         children = [*self.sliders.values(), self.figure.canvas]
         super().__init__(children=children + ([self.readout] if readout else []))
         self._redraw(elev, azim)
+        self._update_readout()
         for slider in self.sliders.values():
             slider.observe(self._on_release, names="value")
 
@@ -532,20 +535,32 @@ class Explorer(ipywidgets.VBox):
         return tuple(float(s.value) for s in self.sliders.values())
 
     def _redraw(self, elev, azim):
+        """Replace the drawing (not the axes: its ticks and panes are costly to rebuild)."""
         polar, azimuth, theta = self.values
         w = axis_from_spherical(polar, azimuth)
-        self.ax.cla()
-        plotting.axes3d(self._title + "\n" + _angles_line(w, theta), ax=self.ax, lim=self._lim)
-        self.ax.set_box_aspect((1, 1, 1), zoom=self._zoom)
-        drawn = self._draw(self.ax, polar, azimuth, theta, elev=elev, azim=azim)
-        self.result = self._pick(drawn)
+        title = self._title + "\n" + _angles_line(w, theta)
+        if self._drawn is None:
+            plotting.axes3d(title, ax=self.ax, lim=self._lim)
+            self.ax.set_box_aspect((1, 1, 1), zoom=_EXPLORER_ZOOM)
+        else:
+            for artist in self._drawn:
+                artist.remove()
+            self.ax.set_title(title, fontsize=plotting.TITLE_SIZE)
+        self._drawn = self._draw(self.ax, polar, azimuth, theta, elev=elev, azim=azim)
+        self.result = self._pick(self._drawn)
+
+    def _update_readout(self):
         if self.readout is not None:
+            polar, azimuth, theta = self.values
+            w = axis_from_spherical(polar, azimuth)
             self.readout.value = "$$" + self._readout(w, theta) + "$$"
 
     def _on_release(self, change):
         self._redraw(self.ax.elev, self.ax.azim)
         # Render and send the image now: draw_idle() would first ask the browser for a redraw.
+        # The readout comes after it: typesetting it would hold the browser up.
         self.figure.canvas.draw()
+        self._update_readout()
 
     def snapshot(self):
         """The figure as it is now, as PNG bytes (a small palette image)."""

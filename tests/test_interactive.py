@@ -468,6 +468,20 @@ def test_releasing_a_slider_redraws_the_same_figure_in_place():
     assert r"$\theta$ = 2.50 rad" in ax.get_title()
 
 
+@pytest.mark.parametrize("make", EXPLORERS)
+def test_redraws_replace_the_drawing_instead_of_piling_it_up(make):
+    widget = make()
+    count = len(widget.ax.get_children())
+    for theta in (0.5, 3.0, 6.0, 1.2):
+        widget.sliders["angle θ"].value = theta
+        assert len(widget.ax.get_children()) == count
+    fresh = make(theta=1.2)
+    assert same_geometry(geometry(widget.ax), geometry(fresh.ax))
+    assert widget.ax.get_title() == fresh.ax.get_title()
+    assert [t.get_text() for t in widget.ax.texts] == [t.get_text() for t in fresh.ax.texts]
+    assert widget.snapshot() == fresh.snapshot()  # the same picture, pixel for pixel
+
+
 def test_rodrigues_explorer_redraws_the_terms_and_the_readout():
     widget = rodrigues_explorer(theta=0.7)
     widget.sliders["axis azimuth λ"].value = -2.0

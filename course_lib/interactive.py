@@ -28,7 +28,10 @@ place, keeping the camera the mouse chose.
 its first figure and a one-line text description, which pages without a kernel (the repository
 viewer, a static site) show instead. The widget model ids are random on every run, so the
 notebooks mark these cells ``NBVAL_IGNORE_OUTPUT``. Executed headless (nbval, nbconvert) no
-browser ever attaches to the canvas, and nothing waits for one.
+browser ever attaches to the canvas, and nothing waits for one. There is no ``Output`` widget:
+nbclient (nbconvert --execute) mimics that one by sending comm messages on the shell channel
+from its output task while its reply task waits on the same socket, a race in which a cell can
+wait for its reply until the timeout (jupyter/nbclient#312).
 """
 
 import base64
@@ -69,7 +72,7 @@ __all__ = [
     "Explorer",
     "rotation_explorer",
     "rodrigues_explorer",
-    "SPIN_MIN_PIXELS",
+    "SPIN_PIXELS",
     "spin_animation",
 ]
 
@@ -90,11 +93,11 @@ _EXPLORER_SIZE = (5.2, 4.8)  # inches at plotting.DPI: 520 x 480 px on the page
 # Turned by the mouse to look from below, the cube's tick labels go to its top: a little
 # smaller, it keeps them clear of the title at every camera.
 _EXPLORER_ZOOM = 0.9
-_SNAPSHOT_COLORS = 96
+_SNAPSHOT_COLORS = 96  # stored snapshots and animation frames are palette PNGs: fewer bytes
 
-#: The frame width of :func:`spin_animation` by default, in pixels: below it the labels cannot
-#: be read.
-SPIN_MIN_PIXELS = 360  # the stored snapshot is a palette PNG: a fraction of the bytes
+#: The frame width of :func:`spin_animation` by default, in pixels: below it the title and the
+#: labels cannot be read.
+SPIN_PIXELS = 360
 _TERM_COLORS = ("black", "tab:orange", "tab:purple")
 _RESULT_COLOR = "tab:blue"
 _AXIS_COLOR = "0.35"
@@ -738,7 +741,7 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
 
     Built with matplotlib's JavaScript player (``HTMLWriter``: the frames are palette PNGs
     embedded in the page, no ffmpeg); the figure is closed so no static copy is displayed as
-    well. The default frames are :data:`SPIN_MIN_PIXELS` = 360 pixels wide, the smallest at
+    well. The default frames are :data:`SPIN_PIXELS` = 360 pixels wide, the smallest at
     which the title and the labels can be read.
 
     Parameters

@@ -269,7 +269,8 @@ def check_notebook(context, server, rel_path, out_dir, timeout):
             if c["type"] == "code"
             for o in c["outputs"]
         )
-        latencies = check_widgets(page, expected, problems, timeout=60)
+        shots = out_dir / Path(rel_path).stem
+        latencies = check_widgets(page, expected, problems, timeout=60, shot_prefix=shots)
         check_overlays(page, problems, "after running")
     except KernelStalled as exc:
         problems.append(str(exc))

@@ -2,7 +2,8 @@
 redraws its figure when released (timed: release -> redrawn figure, by the page's clock), the
 live figure turns when dragged with the mouse, and the formula readout is typeset.
 
-``check_widgets(page, expected, problems, timeout)`` returns the latencies measured (ms).
+``check_widgets(page, expected, problems, timeout)`` returns the latencies measured (ms) and can
+save a screenshot of each widget.
 """
 
 import time
@@ -13,7 +14,9 @@ SLIDER_ROUNDS = 2  # each slider is dragged to the other side of its track and b
 CANVAS_DRAG = (90, 45)  # pixels right and down
 
 
-def check_widgets(page, expected, problems, timeout):
+def check_widgets(page, expected, problems, timeout, shot_prefix=None):
+    """Check every slider widget of the page; ``shot_prefix``: where to save a screenshot of
+    each (``<prefix>-widget<k>.png``) after its checks. Returns the latencies (ms)."""
     n = page.evaluate(js("tag_widgets"))
     if expected and n == 0:
         problems.append(f"{expected} widget output(s) in the model but no slider on the page")
@@ -32,6 +35,9 @@ def check_widgets(page, expected, problems, timeout):
                 latencies.append(latency)
         if first["canvas"]:
             drag_canvas_and_check(page, k, problems, timeout)
+        if shot_prefix is not None:
+            shot = shot_prefix.with_name(f"{shot_prefix.name}-widget{k}.png")
+            page.locator(f'[data-e2e-widget="{k}"]').screenshot(path=str(shot))
     return latencies
 
 

@@ -27,7 +27,7 @@ from course_lib.interactive import (  # noqa: E402
     AZIMUTH_RANGE,
     POLAR_RANGE,
     Q0,
-    SPIN_MIN_PIXELS,
+    SPIN_PIXELS,
     THETA_RANGE,
     VIEW_AZIM,
     VIEW_ELEV,
@@ -414,6 +414,22 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
 
 
 @pytest.mark.parametrize("make", EXPLORERS)
+def test_explorer_has_no_output_widget_for_nbclient_to_mimic(make):
+    """Regression: headless nbconvert of chapter 03 sat 300 s after the explorer cell. nbclient
+    mimics an Output widget by sending its state on the shell channel while it waits there for
+    the cell's reply; the explorers were an ipywidgets.interactive with an Output widget."""
+    import ipywidgets
+
+    def descendants(widget):
+        yield widget
+        for child in getattr(widget, "children", ()):
+            yield from descendants(child)
+
+    widget = make()
+    assert not any(isinstance(w, ipywidgets.Output) for w in descendants(widget))
+
+
+@pytest.mark.parametrize("make", EXPLORERS)
 def test_explorer_figure_is_not_a_pyplot_figure(make):
     # A pyplot figure would be shown once more (as a PNG) at the end of the cell.
     make()
@@ -645,7 +661,7 @@ def test_spin_animation_frames_are_large_enough_to_read():
     """Regression: the notebook's animation had 100 x 100 px frames (title cut, labels
     unreadable); the defaults give 360 px."""
     frames = frames_of(spin_animation(frames=2).data)
-    assert [f.size for f in frames] == [(SPIN_MIN_PIXELS, SPIN_MIN_PIXELS)] * 2 == [(360, 360)] * 2
+    assert [f.size for f in frames] == [(SPIN_PIXELS, SPIN_PIXELS)] * 2 == [(360, 360)] * 2
 
 
 def test_spin_animation_title_fits_in_the_frame():

@@ -481,8 +481,8 @@ def _canvas_figure(figsize):
         )
         FigureManager(canvas, 0)  # not registered with pyplot: plt.show() never shows it again
     canvas.header_visible = False  # no "Figure 0" line above the figure
+    canvas.footer_visible = False  # no "x pane=1.2, y=..." cursor read-out below it
     canvas.resizable = False
-    canvas.toolbar_position = "right"
     return fig
 
 

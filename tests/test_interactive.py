@@ -403,7 +403,10 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
         assert slider.continuous_update is False  # one redraw per release, not per pixel
     assert list(widget.children[:3]) == list(widget.sliders.values())
     assert isinstance(widget.children[3], Canvas) and widget.children[3] is widget.figure.canvas
-    assert widget.figure.canvas.header_visible is False
+    assert (
+        widget.figure.canvas.header_visible is False
+        and widget.figure.canvas.footer_visible is False
+    )
     if make is rodrigues_explorer:
         assert (
             isinstance(widget.children[4], ipywidgets.HTMLMath)

@@ -89,7 +89,20 @@ def wait_for_run(page, timeout):
     try:
         return poll(done, timeout, "all cells to run and the kernel to go idle")
     except CheckFailed as exc:
-        raise KernelStalled(str(exc)) from None
+        raise KernelStalled(f"{exc}; {run_progress(page.evaluate(js('state')))}") from None
+
+
+def run_progress(state):
+    """Where a run stands, for a stall report: how many cells ran, which one is at work."""
+    code = [(i, c) for i, c in enumerate(state["cells"]) if c["type"] == "code"]
+    code = [(i, c) for i, c in code if c["source"].strip()]
+    ran = sum(c["count"] is not None for _, c in code)
+    waiting = next((i for i, c in code if c["count"] is None), None)
+    running = [i for i, c in code if c["state"] == "running"]
+    return (
+        f"{ran} of {len(code)} code cells ran, first not run: cell {waiting}, running: "
+        f"{running or 'none'}, kernel status {state['kernel']!r}"
+    )
 
 
 def check_outputs(state, problems):

@@ -11,7 +11,6 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from course_lib import so3
-from course_lib.interactive import AZIMUTH_RANGE, POLAR_RANGE, THETA_RANGE
 from course_lib.rodrigues import (
     axis_from_spherical,
     rodrigues_terms,
@@ -22,9 +21,9 @@ from course_lib.rodrigues import (
 )
 from course_lib.tolerance import TOL
 
-polars = st.floats(*POLAR_RANGE)
-azimuths = st.floats(*AZIMUTH_RANGE)
-thetas = st.floats(*THETA_RANGE)
+polars = st.floats(0.0, np.pi)  # the ranges of the explorers' sliders
+azimuths = st.floats(-np.pi, np.pi)
+thetas = st.floats(0.0, 2.0 * np.pi)
 coords = st.floats(-2.0, 2.0)
 points = st.tuples(coords, coords, coords)
 Q0 = (1.0, 0.0, 0.0)

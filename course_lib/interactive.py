@@ -1,17 +1,14 @@
-r"""Interactive and animated figures for the chapters on rotations and exponential coordinates.
-
-Two slider widgets and one animation, each built on small pure functions that are tested
-without any widget:
+r"""The explorers and the animation of the chapters on rotations and exponential coordinates.
 
 ==============================  ===============================================================
-Widget / animation              Pure functions behind it
+Widget / animation              What it draws (the maths is in :mod:`course_lib.rodrigues`)
 ==============================  ===============================================================
-:func:`rotation_explorer`       :func:`axis_from_spherical`, :func:`rotated_frame`,
-(notebook 02)                   :func:`draw_rotated_frame`
-:func:`rodrigues_explorer`      :func:`rodrigues_terms`, :func:`rodrigues_vectors`,
-(notebook 03)                   :func:`rodrigues_readout`, :func:`draw_rodrigues_terms`
-:func:`spin_animation`          :func:`spin_rotations`, :func:`spin_times`
-(unit angular velocity)
+:func:`rotation_explorer`       :func:`draw_rotated_frame`: frames A and B = A turned by
+(notebook 02)                   :math:`\theta` about :math:`\omega`
+:func:`rodrigues_explorer`      :func:`draw_rodrigues_terms` and :func:`rodrigues_readout`:
+(notebook 03)                   the three terms of Rodrigues' formula, tip to tail
+:func:`spin_animation`          a body frame spinning at unit angular velocity
+(notebook 03)
 ==============================  ===============================================================
 
 The rotation axis is a unit vector :math:`\omega`, given to the sliders by two spherical
@@ -20,26 +17,46 @@ angles: the polar angle :math:`\varphi \in [0, \pi]` (measured from the z axis) 
 notes' :math:`R(\omega, \theta) = e^{\hat\omega\theta}` (eq. 127), computed by
 :func:`course_lib.so3.exp`; drawing uses the primitives of :mod:`course_lib.plotting`.
 
-The widgets redraw a fresh PNG each time a slider is released (``continuous_update=False``),
-so they work in JupyterLab with the default inline backend; in the stored notebooks their
-outputs are marked ``NBVAL_IGNORE_OUTPUT`` because widget model ids are random.
+**Turn it with the mouse.** An explorer is three sliders above a live matplotlib figure drawn
+by ``ipympl``, matplotlib's own Jupyter widget backend: drag the 3D view to look at it from
+any side (the toolbar's home button goes back to the first view). Only the explorer's own
+figure lives on an ipympl canvas; the notebook's backend and every other figure stay as they
+are (static PNGs). Releasing a slider (``continuous_update=False``) redraws the figure in
+place, keeping the camera the mouse chose.
 
-The 3D view of both explorers can be turned: besides the three sliders of the rotation, two
-camera sliders, ``view elev (°)`` and ``view azim (°)``, set matplotlib's viewing angles
-(``Axes3D.view_init``, in degrees; defaults :data:`VIEW_ELEV`, :data:`VIEW_AZIM`, the view of
-:func:`course_lib.plotting.axes3d`). They move the camera only, never the drawn geometry. The
-course does not use the ``ipympl`` backend (mouse-draggable figures), which would store widget
-state instead of static PNGs in the saved notebooks.
+**Stored output.** Displayed, an explorer gives the live widget view plus a PNG snapshot of
+its first figure and a one-line text description, which pages without a kernel (the repository
+viewer, a static site) show instead. The widget model ids are random on every run, so the
+notebooks mark these cells ``NBVAL_IGNORE_OUTPUT``. Executed headless (nbval, nbconvert) no
+browser ever attaches to the canvas, and nothing waits for one. There is no ``Output`` widget:
+nbclient (nbconvert --execute) mimics that one by sending comm messages on the shell channel
+from its output task while its reply task waits on the same socket, a race in which a cell can
+wait for its reply until the timeout (jupyter/nbclient#312).
 """
 
-import numpy as np
+import base64
+import io
+import tempfile
+import warnings
+from pathlib import Path
 
+import ipywidgets
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib import animation
+from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from . import plotting, so3
 from ._arrays import as_angles, as_count, as_vectors
+from .rodrigues import (
+    _unit_axis,
+    axis_from_spherical,
+    rodrigues_terms,
+    rodrigues_vectors,
+    spin_rotations,
+    spin_times,
+)
 from .tolerance import TOL
 
 __all__ = [
@@ -49,19 +66,13 @@ __all__ = [
     "Q0",
     "VIEW_ELEV",
     "VIEW_AZIM",
-    "VIEW_ELEV_RANGE",
-    "VIEW_AZIM_RANGE",
-    "axis_from_spherical",
-    "rotated_frame",
-    "rodrigues_terms",
-    "rodrigues_vectors",
     "rodrigues_readout",
     "draw_rotated_frame",
     "draw_rodrigues_terms",
+    "Explorer",
     "rotation_explorer",
     "rodrigues_explorer",
-    "spin_times",
-    "spin_rotations",
+    "SPIN_PIXELS",
     "spin_animation",
 ]
 
@@ -77,14 +88,16 @@ Q0 = (1.0, 0.0, 0.0)
 VIEW_ELEV = 20.0
 VIEW_AZIM = -60.0
 
-#: Ranges of the camera sliders, in degrees: elevation from below (−90) to above (90) the xy
-#: plane, azimuth once around the z axis.
-VIEW_ELEV_RANGE = (-90.0, 90.0)
-VIEW_AZIM_RANGE = (-180.0, 180.0)
-
 _SLIDER_STEP = 0.01
-_VIEW_STEP = 1.0
-_EXPLORER_ZOOM = 0.85
+_EXPLORER_SIZE = (5.2, 4.8)  # inches at plotting.DPI: 520 x 480 px on the page
+# Turned by the mouse to look from below, the cube's tick labels go to its top: a little
+# smaller, it keeps them clear of the title at every camera.
+_EXPLORER_ZOOM = 0.9
+_SNAPSHOT_COLORS = 96  # stored snapshots and animation frames are palette PNGs: fewer bytes
+
+#: The frame width of :func:`spin_animation` by default, in pixels: below it the title and the
+#: labels cannot be read.
+SPIN_PIXELS = 360
 _TERM_COLORS = ("black", "tab:orange", "tab:purple")
 _RESULT_COLOR = "tab:blue"
 _AXIS_COLOR = "0.35"
@@ -95,244 +108,6 @@ _RODRIGUES_LABELS = (
     r"$(1-\cos\theta)\,\hat\omega^2 q_0$",
     r"$e^{\hat\omega\theta}q_0$ (sum)",
 )
-
-
-# --------------------------------------------------------------------------------------------
-# Pure functions
-# --------------------------------------------------------------------------------------------
-
-
-def axis_from_spherical(polar, azimuth):
-    r"""The unit rotation axis with the given polar angle and azimuth.
-
-    .. math::
-
-        \omega(\varphi, \lambda) = \begin{bmatrix} \sin\varphi\cos\lambda \\
-        \sin\varphi\sin\lambda \\ \cos\varphi \end{bmatrix}, \qquad \|\omega\| = 1 .
-
-    Parameters
-    ----------
-    polar : array_like
-        Polar angle :math:`\varphi` in radians, measured from the z axis (any real value;
-        the sliders use :math:`[0, \pi]`).
-    azimuth : array_like
-        Azimuth :math:`\lambda` in radians, measured in the xy plane from the x axis.
-        Broadcast against ``polar``.
-
-    Returns
-    -------
-    ndarray, shape (..., 3)
-        Unit vectors, one per broadcast pair of angles.
-
-    Raises
-    ------
-    ValueError
-        If an angle is NaN or infinite, or the shapes do not broadcast.
-    TypeError
-        If an angle is not a real number.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> np.round(axis_from_spherical(np.pi / 2, np.pi / 2), 12)
-    array([0., 1., 0.])
-    >>> axis_from_spherical([0.0, 1.0, 2.0], 0.3).shape
-    (3, 3)
-    """
-    polar = as_angles(polar, "polar")
-    azimuth = as_angles(azimuth, "azimuth")
-    try:
-        polar, azimuth = np.broadcast_arrays(polar, azimuth)
-    except ValueError:
-        raise ValueError(
-            f"polar and azimuth must broadcast together, got shapes {np.shape(polar)} "
-            f"and {np.shape(azimuth)}"
-        ) from None
-    s = np.sin(polar)
-    return np.stack([s * np.cos(azimuth), s * np.sin(azimuth), np.cos(polar)], axis=-1)
-
-
-def rotated_frame(polar, azimuth, theta):
-    r"""The rotation by ``theta`` about the axis with spherical angles ``(polar, azimuth)``.
-
-    .. math:: R = e^{\hat\omega\theta}, \qquad \omega = \omega(\varphi, \lambda)
-
-    (eq. 127); its columns are the axes of the rotated body frame seen in the world frame
-    (eq. 26).
-
-    Parameters
-    ----------
-    polar, azimuth : array_like
-        Spherical angles of the axis, see :func:`axis_from_spherical`.
-    theta : array_like
-        Rotation angle in radians, broadcast against the angles of the axis.
-
-    Returns
-    -------
-    ndarray, shape (..., 3, 3)
-        Rotation matrices.
-
-    Raises
-    ------
-    ValueError
-        If an input is NaN or infinite, or the shapes do not broadcast.
-    TypeError
-        If an input is not a real number.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from course_lib import so3
-    >>> R = rotated_frame(0.0, 0.0, np.pi / 2)      # polar angle 0: the z axis
-    >>> np.allclose(R, so3.rot_z(np.pi / 2))
-    True
-    """
-    axis = axis_from_spherical(polar, azimuth)
-    theta = as_angles(theta, "theta")
-    return so3.exp(axis, theta)
-
-
-def _unit_axis(axis, tol=TOL, name="axis"):
-    """A (..., 3) array of unit vectors, or ValueError naming the norm that is off."""
-    w = as_vectors(axis, name)
-    norm = np.linalg.norm(w, axis=-1)
-    off = np.abs(norm - 1.0)
-    if not np.all(off <= tol):
-        worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
-        where = f" at batch index {tuple(int(i) for i in worst)}" if worst else ""
-        raise ValueError(
-            f"{name} is not a unit vector: ‖{name}‖ = {float(norm[worst]):.6g}, "
-            f"|‖{name}‖ − 1| = {float(off[worst]):.1e} > TOL = {tol:.0e}{where}; "
-            f"expected ‖{name}‖ = 1 (divide by its norm)"
-        )
-    return w
-
-
-def rodrigues_terms(axis, theta, tol=TOL):
-    r"""The three terms of Rodrigues' formula, whose sum is :math:`e^{\hat\omega\theta}`.
-
-    .. math::
-
-        e^{\hat\omega\theta} = \underbrace{I}_{\text{term 0}}
-        + \underbrace{\sin\theta\,\hat\omega}_{\text{term 1}}
-        + \underbrace{(1-\cos\theta)\,\hat\omega^2}_{\text{term 2}}
-        \qquad \text{(eq. 159)} .
-
-    Parameters
-    ----------
-    axis : array_like, shape (..., 3)
-        Unit rotation axes :math:`\omega`.
-    theta : array_like
-        Angles in radians, broadcast against the batch shape of ``axis``.
-    tol : float, default TOL
-        Largest accepted :math:`|\|\omega\| - 1|`.
-
-    Returns
-    -------
-    identity, sin_term, cos_term : ndarray, shape (..., 3, 3)
-        :math:`I`, :math:`\sin\theta\,\hat\omega` and :math:`(1-\cos\theta)\,\hat\omega^2`.
-
-    Raises
-    ------
-    ValueError
-        If an axis is not a unit vector (the message gives its norm), a shape is wrong, or an
-        input is NaN or infinite.
-    TypeError
-        If an input is not a real number.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from course_lib import so3
-    >>> I, S, C = rodrigues_terms([0, 0, 1], np.pi / 2)
-    >>> np.round(S, 12) + 0.0                       # + 0.0 turns -0. into 0.
-    array([[ 0., -1.,  0.],
-           [ 1.,  0.,  0.],
-           [ 0.,  0.,  0.]])
-    >>> np.allclose(I + S + C, so3.exp([0, 0, 1], np.pi / 2))
-    True
-    """
-    w = _unit_axis(axis, tol)
-    theta = as_angles(theta, "theta")
-    W = so3.hat(w)
-    W2 = W @ W
-    try:
-        shape = np.broadcast_shapes(w.shape[:-1], theta.shape)
-    except ValueError:
-        raise ValueError(
-            f"theta of shape {theta.shape} does not broadcast against the batch shape "
-            f"{w.shape[:-1]} of axis"
-        ) from None
-    s = np.sin(theta)[..., None, None]
-    c = (1.0 - np.cos(theta))[..., None, None]
-    identity = np.broadcast_to(np.eye(3), shape + (3, 3)).copy()
-    sin_term = np.broadcast_to(s * W, shape + (3, 3)).copy()
-    cos_term = np.broadcast_to(c * W2, shape + (3, 3)).copy()
-    return identity, sin_term, cos_term
-
-
-def rodrigues_vectors(axis, theta, q0=Q0, tol=TOL):
-    r"""Rodrigues' formula applied to a point: three vectors that add up to the rotated point.
-
-    .. math::
-
-        e^{\hat\omega\theta} q_0 = q_0 + \sin\theta\,\hat\omega q_0
-        + (1-\cos\theta)\,\hat\omega^2 q_0 ,
-
-    where :math:`\hat\omega q_0 = \omega \times q_0` is tangent to the circle that
-    :math:`q_0` travels about the axis and :math:`\hat\omega^2 q_0 = \omega\,\omega^T q_0 - q_0`
-    (eq. 141) points from :math:`q_0` towards the axis. Drawn tip to tail, the three vectors
-    land on :math:`e^{\hat\omega\theta} q_0`.
-
-    Parameters
-    ----------
-    axis : array_like, shape (..., 3)
-        Unit rotation axes.
-    theta : array_like
-        Angles in radians.
-    q0 : array_like, shape (..., 3), default Q0
-        The point being rotated.
-    tol : float, default TOL
-        Largest accepted :math:`|\|\omega\| - 1|`.
-
-    Returns
-    -------
-    q0, sin_vec, cos_vec : ndarray, shape (..., 3)
-        :math:`q_0`, :math:`\sin\theta\,\hat\omega q_0` and
-        :math:`(1-\cos\theta)\,\hat\omega^2 q_0`, broadcast to a common shape.
-
-    Raises
-    ------
-    ValueError
-        If an axis is not a unit vector, a shape is wrong, or an input is NaN or infinite.
-    TypeError
-        If an input is not a real number.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from course_lib import so3
-    >>> parts = rodrigues_vectors([0, 0, 1], np.pi / 2, q0=[1, 0, 0])
-    >>> [np.round(p, 12).tolist() for p in parts]
-    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]
-    >>> np.allclose(sum(parts), so3.exp([0, 0, 1], np.pi / 2) @ [1, 0, 0])
-    True
-    """
-    q0 = as_vectors(q0, "q0")
-    identity, sin_term, cos_term = rodrigues_terms(axis, theta, tol)
-    try:
-        shape = np.broadcast_shapes(identity.shape[:-2], q0.shape[:-1])
-    except ValueError:
-        raise ValueError(
-            f"q0 of shape {q0.shape} does not broadcast against the batch shape "
-            f"{identity.shape[:-2]} of axis and theta"
-        ) from None
-    q = np.broadcast_to(q0, shape + (3,))
-    return (
-        q.copy(),
-        np.einsum("...ij,...j->...i", sin_term, q),
-        np.einsum("...ij,...j->...i", cos_term, q),
-    )
 
 
 def _fmt(x, decimals):
@@ -439,7 +214,9 @@ def _set_view(ax, elev, azim):
 def _draw_axis_line(ax, w, length=1.4):
     """The rotation axis: a dashed line through the origin and the arrow omega."""
     drawn = []
-    drawn.extend(plotting.draw_segment(ax, -length * w, length * w, color=_AXIS_COLOR, style="dashed"))
+    drawn.extend(
+        plotting.draw_segment(ax, -length * w, length * w, color=_AXIS_COLOR, style="dashed")
+    )
     drawn.extend(plotting.draw_vector(ax, w, label=r"$\omega$", color=_AXIS_COLOR))
     return drawn
 
@@ -518,7 +295,9 @@ def draw_rotated_frame(ax, polar, azimuth, theta, *, elev=VIEW_ELEV, azim=VIEW_A
             arcs.append(arc.points)
     body = plotting.draw_frame(ax, R, label="B")
     artists.extend(body)
-    return plotting.Drawn("rotated_frame", artists, body.points, R=R, axis=w, theta=theta, arcs=arcs)
+    return plotting.Drawn(
+        "rotated_frame", artists, body.points, R=R, axis=w, theta=theta, arcs=arcs
+    )
 
 
 def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, azim=VIEW_AZIM):
@@ -597,8 +376,17 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     center = (w @ q0) * w
     circle = None
     if np.linalg.norm(q0 - center) > TOL:
-        arc = plotting.draw_arc(ax, w, q0 - center, 2.0 * np.pi, center=center, n=90,
-                                color="0.6", style="dotted", arrow=False)
+        arc = plotting.draw_arc(
+            ax,
+            w,
+            q0 - center,
+            2.0 * np.pi,
+            center=center,
+            n=90,
+            color="0.6",
+            style="dotted",
+            arrow=False,
+        )
         artists.extend(arc)
         circle = arc.points
     for k in range(3):
@@ -606,10 +394,18 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     artists.extend(plotting.draw_vector(ax, q, color=_RESULT_COLOR, linewidth=2.6))
     # A legend rather than labels at the tips: the last term and the result end at one point.
     handles = [Line2D([], [], color=c, linewidth=2.2) for c in _TERM_COLORS + (_RESULT_COLOR,)]
-    artists.append(ax.legend(handles, _RODRIGUES_LABELS, loc="upper left", fontsize=plotting.FONT_SIZE - 2,
-                             frameon=False))
-    return plotting.Drawn("rodrigues", artists, chain, terms=terms, q=q, R=R, axis=w,
-                          theta=theta, circle=circle)
+    artists.append(
+        ax.legend(
+            handles,
+            _RODRIGUES_LABELS,
+            loc="upper left",
+            fontsize=plotting.FONT_SIZE - 2,
+            frameon=False,
+        )
+    )
+    return plotting.Drawn(
+        "rodrigues", artists, chain, terms=terms, q=q, R=R, axis=w, theta=theta, circle=circle
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -617,82 +413,172 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
 # --------------------------------------------------------------------------------------------
 
 
-def _in_ipython():
-    """True inside an IPython shell or kernel (where ``display`` shows rich output)."""
-    from IPython import get_ipython
-
-    return get_ipython() is not None
-
-
-def _show(*objs):
-    """Display ``objs`` in a notebook (inside the widget's output area); no-op elsewhere.
-
-    Outside IPython, ``display`` would print reprs to stdout, which tells nobody anything.
-    """
-    if _in_ipython():
-        from IPython.display import clear_output, display
-
-        clear_output(wait=True)
-        display(*objs)
-
-
-def _slider(value, bounds, description, unit="radians", step=_SLIDER_STEP, readout=".2f"):
-    import ipywidgets
-
+def _slider(value, bounds, description):
     lo, hi = bounds
     value = _scalar_angle(value, description)
     if not lo <= value <= hi:
         raise ValueError(
-            f"{description} = {value:g} is outside the slider range [{lo:.4g}, {hi:.4g}] ({unit})"
+            f"{description} = {value:g} is outside the slider range [{lo:.4g}, {hi:.4g}] (radians)"
         )
     return ipywidgets.FloatSlider(
         value=value,
         min=lo,
         max=hi,
-        step=step,
+        step=_SLIDER_STEP,
         description=description,
         continuous_update=False,
-        readout_format=readout,
+        readout_format=".2f",
         style={"description_width": "8em"},
         layout=ipywidgets.Layout(width="30em"),
     )
 
 
-def _view_slider(value, bounds, description):
-    return _slider(value, bounds, description, unit="degrees", step=_VIEW_STEP, readout=".0f")
+def _ipympl_classes():
+    """ipympl's canvas and figure manager, imported without switching pyplot's backend.
+
+    ``import ipympl`` calls ``matplotlib.use("module://ipympl.backend_nbagg")`` when matplotlib
+    is loaded: every later ``plt.show()`` of the notebook would then make a widget instead of
+    a PNG. The backend the notebook had (or the unresolved default) is put back.
+    (Switching backends closes pyplot's open figures, as ``import ipympl`` itself does.)
+    """
+    import sys
+
+    if "ipympl.backend_nbagg" not in sys.modules:
+        import matplotlib
+        from matplotlib import rcsetup
+
+        if "matplotlib.pyplot" in sys.modules:
+            # Load the notebook's backend first: the inline backend hooks itself into IPython
+            # when it is loaded as the current backend, and would not after the switch back.
+            plt._get_backend_mod()
+        backend = matplotlib.rcParams._get_backend_or_none()  # None: not chosen yet
+        fallback = matplotlib.rcParams["backend_fallback"]
+        import ipympl.backend_nbagg  # noqa: F401
+
+        if backend is None:
+            matplotlib.rcParams["backend"] = rcsetup._auto_backend_sentinel
+        else:
+            matplotlib.use(backend)
+        matplotlib.rcParams["backend_fallback"] = fallback
+    from ipympl.backend_nbagg import Canvas, FigureManager
+
+    return Canvas, FigureManager
 
 
-def _explorer(callback, polar, azimuth, theta, elev, azim):
-    import ipywidgets
+def _canvas_figure(figsize):
+    """A figure on an ipympl canvas of its own, outside pyplot (no backend is switched).
 
-    return ipywidgets.interactive(
-        callback,
-        polar=_slider(polar, POLAR_RANGE, "axis polar φ"),
-        azimuth=_slider(azimuth, AZIMUTH_RANGE, "axis azimuth λ"),
-        theta=_slider(theta, THETA_RANGE, "angle θ"),
-        # The camera, in degrees; labelled "view" so it is not taken for the axis angles.
-        elev=_view_slider(elev, VIEW_ELEV_RANGE, "view elev (°)"),
-        azim=_view_slider(azim, VIEW_AZIM_RANGE, "view azim (°)"),
-        # _show clears the output itself, only inside IPython (clear_output would print
-        # escape codes elsewhere).
-        clear_output=False,
-    )
-
-
-def _explorer_axes(title, w, theta):
-    """A 3D figure whose second title line gives the current axis and angle."""
-    angles = rf"$\omega$ = ({w[0]:.2f}, {w[1]:.2f}, {w[2]:.2f}),  $\theta$ = {theta:.2f} rad"
-    fig, ax = plotting.axes3d(title + "\n" + angles)
-    fig.subplots_adjust(top=0.86)
-    # The camera sliders can look from below, where the x/y tick labels go to the top of the
-    # cube: drawn a little smaller, the cube keeps its labels clear of the title and inside the
-    # figure at every camera angle the sliders allow.
-    ax.set_box_aspect((1, 1, 1), zoom=_EXPLORER_ZOOM)
-    return fig, ax
+    The canvas is a widget: matplotlib's 3D mouse rotation runs in the kernel and the browser
+    shows the redrawn image.
+    """
+    Canvas, FigureManager = _ipympl_classes()
+    fig = Figure(figsize=figsize, dpi=plotting.DPI)
+    canvas = Canvas(fig)
+    with warnings.catch_warnings():
+        # ipympl 0.10's own toolbar passes its canvas on to traitlets, which warns about it
+        warnings.filterwarnings(
+            "ignore", r"Passing unrecognized arguments to super\(Toolbar\)", DeprecationWarning
+        )
+        FigureManager(canvas, 0)  # not registered with pyplot: plt.show() never shows it again
+    canvas.header_visible = False  # no "Figure 0" line above the figure
+    canvas.footer_visible = False  # no "x pane=1.2, y=..." cursor read-out below it
+    canvas.resizable = False
+    return fig
 
 
-def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, *,
-                      elev=VIEW_ELEV, azim=VIEW_AZIM):
+def _angles_line(w, theta):
+    return rf"$\omega$ = ({w[0]:.2f}, {w[1]:.2f}, {w[2]:.2f}),  $\theta$ = {theta:.2f} rad"
+
+
+class Explorer(ipywidgets.VBox):
+    r"""Three sliders (axis polar angle, azimuth, angle) above a 3D view that turns with the mouse.
+
+    Built by :func:`rotation_explorer` and :func:`rodrigues_explorer`. Releasing a slider
+    redraws the figure in place with ``draw(ax, polar, azimuth, theta, elev=, azim=)``, at the
+    camera the mouse left it at. ``result`` holds what the drawing computed (``pick(drawn)``).
+
+    Attributes
+    ----------
+    sliders : dict of str to ipywidgets.FloatSlider
+        The three sliders, by description.
+    figure : matplotlib.figure.Figure
+        The live figure; ``figure.canvas`` is the ipympl canvas widget.
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+    readout : ipywidgets.HTMLMath or None
+        A formula below the figure, rewritten on every redraw.
+    result : numpy.ndarray
+        What the current drawing computed (the rotation, or the Rodrigues vectors).
+    description : str
+        One line saying what the explorer shows: the text pages without widgets display.
+    """
+
+    def __init__(self, draw, pick, title, description, angles, camera, lim, readout=None):
+        names = ("axis polar φ", "axis azimuth λ", "angle θ")
+        ranges = (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)
+        self.sliders = {n: _slider(v, r, n) for n, v, r in zip(names, angles, ranges)}
+        elev, azim = (_view_angle(a, n) for a, n in zip(camera, ("elev", "azim")))
+        self.figure = _canvas_figure(_EXPLORER_SIZE)
+        self.figure.subplots_adjust(left=0.0, right=0.94, bottom=0.02, top=0.86)
+        self.ax = self.figure.add_subplot(projection="3d")
+        self._drawn = None
+        self.description = description
+        self._draw, self._pick, self._title, self._lim = draw, pick, title, lim
+        self._readout = readout
+        self.readout = ipywidgets.HTMLMath() if readout else None
+        children = [*self.sliders.values(), self.figure.canvas]
+        super().__init__(children=children + ([self.readout] if readout else []))
+        self._redraw(elev, azim)
+        self._update_readout()
+        for slider in self.sliders.values():
+            slider.observe(self._on_release, names="value")
+
+    @property
+    def values(self):
+        """The current (polar, azimuth, theta) of the sliders, in radians."""
+        return tuple(float(s.value) for s in self.sliders.values())
+
+    def _redraw(self, elev, azim):
+        """Replace the drawing (not the axes: its ticks and panes are costly to rebuild)."""
+        polar, azimuth, theta = self.values
+        w = axis_from_spherical(polar, azimuth)
+        title = self._title + "\n" + _angles_line(w, theta)
+        if self._drawn is None:
+            plotting.axes3d(title, ax=self.ax, lim=self._lim)
+            self.ax.set_box_aspect((1, 1, 1), zoom=_EXPLORER_ZOOM)
+        else:
+            for artist in self._drawn:
+                artist.remove()
+            self.ax.set_title(title, fontsize=plotting.TITLE_SIZE)
+        self._drawn = self._draw(self.ax, polar, azimuth, theta, elev=elev, azim=azim)
+        self.result = self._pick(self._drawn)
+
+    def _update_readout(self):
+        if self.readout is not None:
+            polar, azimuth, theta = self.values
+            w = axis_from_spherical(polar, azimuth)
+            self.readout.value = "$$" + self._readout(w, theta) + "$$"
+
+    def _on_release(self, change):
+        self._redraw(self.ax.elev, self.ax.azim)
+        # Render and send the image now: draw_idle() would first ask the browser for a redraw.
+        # The readout comes after it: typesetting it would hold the browser up.
+        self.figure.canvas.draw()
+        self._update_readout()
+
+    def snapshot(self):
+        """The figure as it is now, as PNG bytes (a small palette image)."""
+        return _palette_png(self.figure)
+
+    def _repr_mimebundle_(self, **kwargs):
+        data = super()._repr_mimebundle_(**kwargs)
+        data["text/plain"] = self.description
+        data["image/png"] = base64.b64encode(self.snapshot()).decode("ascii")
+        return data
+
+
+def rotation_explorer(
+    polar=np.pi / 4, azimuth=3 * np.pi / 4, theta=2 * np.pi / 3, *, elev=VIEW_ELEV, azim=VIEW_AZIM
+):
     r"""Sliders for an axis and an angle, redrawing the body frame :math:`e^{\hat\omega\theta}`.
 
     Three sliders (polar angle :math:`\varphi` and azimuth :math:`\lambda` of the unit axis
@@ -702,56 +588,57 @@ def rotation_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, *,
     .. math:: R_{ab} = e^{\hat\omega\theta}, \qquad
               \omega = (\sin\varphi\cos\lambda, \sin\varphi\sin\lambda, \cos\varphi).
 
-    Two more sliders, ``view elev (°)`` and ``view azim (°)``, turn the camera to look at the
-    frames from another side; they do not change the rotation.
+    Drag the figure with the mouse to look at the frames from another side; that moves the
+    camera only, never the rotation.
 
     Parameters
     ----------
     polar : float, default π/4
         Initial polar angle, in ``POLAR_RANGE`` = [0, π].
-    azimuth : float, default π/4
+    azimuth : float, default 3π/4
         Initial azimuth, in ``AZIMUTH_RANGE`` = [−π, π].
-    theta : float, default π/3
+    theta : float, default 2π/3
         Initial rotation angle, in ``THETA_RANGE`` = [0, 2π].
-    elev : float, keyword-only, default VIEW_ELEV = 20
-        Initial camera elevation in degrees, in ``VIEW_ELEV_RANGE`` = [−90, 90].
-    azim : float, keyword-only, default VIEW_AZIM = −60
-        Initial camera azimuth in degrees, in ``VIEW_AZIM_RANGE`` = [−180, 180].
+    elev, azim : float, keyword-only, default VIEW_ELEV = 20, VIEW_AZIM = −60
+        Initial camera, in degrees (matplotlib's ``view_init``).
 
     Returns
     -------
-    ipywidgets.interactive
-        A box with the five sliders and the figure; ``.result`` holds the current rotation
-        matrix :math:`R`.
+    Explorer
+        The sliders and the live figure; ``.result`` holds the current rotation matrix
+        :math:`R`.
 
     Raises
     ------
     ValueError
-        If an initial value is not a finite number inside its slider's range.
+        If an initial angle is not a finite number inside its slider's range, or a camera
+        angle is not a finite number.
 
     Examples
     --------
     >>> import numpy as np
+    >>> from course_lib.rodrigues import rotated_frame
     >>> w = rotation_explorer()
-    >>> [child.description for child in w.children[:5]]
-    ['axis polar φ', 'axis azimuth λ', 'angle θ', 'view elev (°)', 'view azim (°)']
-    >>> np.allclose(w.result, rotated_frame(np.pi / 4, np.pi / 4, np.pi / 3))
+    >>> list(w.sliders)
+    ['axis polar φ', 'axis azimuth λ', 'angle θ']
+    >>> np.allclose(w.result, rotated_frame(np.pi / 4, 3 * np.pi / 4, 2 * np.pi / 3))
     True
     """
+    return Explorer(
+        draw_rotated_frame,
+        lambda drawn: drawn.R,
+        r"Body frame B: $R_{ab} = e^{\hat\omega\theta}$",
+        "Rotation explorer: sliders for the axis ω (polar angle φ, azimuth λ) and the angle θ "
+        "redraw frame B, frame A turned by θ about ω; drag the 3D view to turn it.",
+        (polar, azimuth, theta),
+        (elev, azim),
+        lim=1.2,
+    )
 
-    def redraw(polar, azimuth, theta, elev, azim):
-        w = axis_from_spherical(polar, azimuth)
-        fig, ax = _explorer_axes(r"Body frame B: $R_{ab} = e^{\hat\omega\theta}$", w, theta)
-        drawn = draw_rotated_frame(ax, polar, azimuth, theta, elev=elev, azim=azim)
-        _show(fig)
-        plt.close(fig)
-        return drawn.R
 
-    return _explorer(redraw, polar, azimuth, theta, elev, azim)
-
-
-def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q0, *,
-                       elev=VIEW_ELEV, azim=VIEW_AZIM):
+def rodrigues_explorer(
+    polar=np.pi / 3, azimuth=np.pi / 2, theta=np.pi / 2, q0=Q0, *, elev=VIEW_ELEV, azim=VIEW_AZIM
+):
     r"""Sliders for an axis and an angle, showing Rodrigues' formula assemble the rotation.
 
     The figure is :func:`draw_rodrigues_terms`: :math:`q_0`, :math:`\sin\theta\,\hat\omega q_0`
@@ -760,29 +647,27 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
 
     .. math:: e^{\hat\omega\theta} = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2
 
-    with numbers (eq. 159). Two camera sliders, ``view elev (°)`` and ``view azim (°)``, turn
-    the 3D view without changing the rotation.
+    with numbers (eq. 159). Drag the figure with the mouse to turn the 3D view.
 
     Parameters
     ----------
-    polar : float, default π/4
+    polar : float, default π/3
         Initial polar angle of the axis, in [0, π].
-    azimuth : float, default π/4
-        Initial azimuth of the axis, in [−π, π].
-    theta : float, default π/3
+    azimuth : float, default π/2
+        Initial azimuth of the axis, in [−π, π] (π/2: the axis is perpendicular to
+        ``Q0``, whose circle is then as large as it can be).
+    theta : float, default π/2
         Initial rotation angle, in [0, 2π].
     q0 : array_like, shape (3,), default Q0
         The point being rotated.
-    elev : float, keyword-only, default VIEW_ELEV = 20
-        Initial camera elevation in degrees, in [−90, 90].
-    azim : float, keyword-only, default VIEW_AZIM = −60
-        Initial camera azimuth in degrees, in [−180, 180].
+    elev, azim : float, keyword-only, default VIEW_ELEV = 20, VIEW_AZIM = −60
+        Initial camera, in degrees.
 
     Returns
     -------
-    ipywidgets.interactive
-        The five sliders, the figure and the readout; ``.result`` holds the three vectors of
-        :func:`rodrigues_vectors`, shape (3, 3).
+    Explorer
+        The sliders, the live figure and the readout; ``.result`` holds the three vectors of
+        :func:`course_lib.rodrigues.rodrigues_vectors`, shape (3, 3).
 
     Raises
     ------
@@ -793,8 +678,9 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
     --------
     >>> import numpy as np
     >>> from course_lib import so3
+    >>> from course_lib.rodrigues import axis_from_spherical
     >>> w = rodrigues_explorer(theta=1.0)
-    >>> axis = axis_from_spherical(np.pi / 4, np.pi / 4)
+    >>> axis = axis_from_spherical(np.pi / 3, np.pi / 2)
     >>> np.allclose(w.result.sum(axis=0), so3.exp(axis, 1.0) @ Q0)
     True
     """
@@ -802,17 +688,21 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
     if q0.shape != (3,):
         raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
 
-    def redraw(polar, azimuth, theta, elev, azim):
-        from IPython.display import Math
+    def draw(ax, polar, azimuth, theta, elev, azim):
+        return draw_rodrigues_terms(ax, polar, azimuth, theta, q0, elev=elev, azim=azim)
 
-        w = axis_from_spherical(polar, azimuth)
-        fig, ax = _explorer_axes(r"Rodrigues' formula applied to $q_0$", w, theta)
-        drawn = draw_rodrigues_terms(ax, polar, azimuth, theta, q0, elev=elev, azim=azim)
-        _show(fig, Math(rodrigues_readout(w, theta)))
-        plt.close(fig)
-        return drawn.terms
-
-    return _explorer(redraw, polar, azimuth, theta, elev, azim)
+    return Explorer(
+        draw,
+        lambda drawn: drawn.terms,
+        r"Rodrigues' formula applied to $q_0$",
+        "Rodrigues explorer: sliders for the axis ω and the angle θ; q0, sinθ ω̂q0 and "
+        "(1 − cosθ) ω̂²q0 drawn tip to tail land on e^(ω̂θ) q0; the matrices below, with "
+        "numbers; drag the 3D view to turn it.",
+        (polar, azimuth, theta),
+        (elev, azim),
+        lim=1.3,
+        readout=rodrigues_readout,
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -820,116 +710,53 @@ def rodrigues_explorer(polar=np.pi / 4, azimuth=np.pi / 4, theta=np.pi / 3, q0=Q
 # --------------------------------------------------------------------------------------------
 
 
-def spin_times(frames, duration=2.0 * np.pi):
-    r"""The sample times of a spin animation: ``frames`` equal steps over ``duration``.
+def _palette_png(fig, colors=_SNAPSHOT_COLORS, **savefig_kwargs):
+    """The figure as a palette PNG: the same picture in a third of the bytes or less."""
+    from PIL import Image
 
-    .. math:: t_k = k\,\frac{T}{N}, \qquad k = 0, \dots, N-1,
-
-    the end point :math:`T` left out so that a full turn (:math:`T = 2\pi`) loops without a
-    repeated frame. With unit angular velocity the angle equals the time, :math:`\theta = t`.
-
-    Parameters
-    ----------
-    frames : int
-        Number of frames :math:`N` (at least 2).
-    duration : float, default 2π
-        Total time :math:`T` in seconds (> 0).
-
-    Returns
-    -------
-    ndarray, shape (frames,)
-
-    Raises
-    ------
-    ValueError
-        If ``frames < 2`` or ``duration`` is not a positive finite number.
-    TypeError
-        If ``frames`` is not an integer.
-
-    Examples
-    --------
-    >>> spin_times(4, duration=2.0)
-    array([0. , 0.5, 1. , 1.5])
-    """
-    frames = as_count(frames, "frames", minimum=2)
-    duration = _scalar_angle(duration, "duration")
-    if not duration > 0:
-        raise ValueError(f"duration must be > 0 seconds, got {duration:g}")
-    return np.arange(frames) * (duration / frames)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", **savefig_kwargs)
+    out = io.BytesIO()
+    Image.open(buf).convert("RGB").quantize(colors).save(out, format="png", optimize=True)
+    return out.getvalue()
 
 
-def spin_rotations(axis, t):
-    r"""Orientation of a body spinning at unit angular velocity about ``axis``, at times ``t``.
+class _PaletteHTMLWriter(animation.HTMLWriter):
+    """matplotlib's JavaScript player, with palette PNG frames (the HTML is stored)."""
 
-    With :math:`\omega = \mathrm{axis}/\|\mathrm{axis}\|` (unit magnitude: one radian per
-    second), a point of the body moves as :math:`q(t) = e^{\hat\omega t} q_0` (eq. 123), so the
-    body frame at time :math:`t` is
-
-    .. math:: R(t) = e^{\hat\omega t}, \qquad \theta = t \quad \text{(eq. 125)} .
-
-    Parameters
-    ----------
-    axis : array_like, shape (3,)
-        Direction of the angular velocity (any non-zero length; it is normalised).
-    t : array_like
-        Times in seconds.
-
-    Returns
-    -------
-    ndarray, shape t.shape + (3, 3)
-
-    Raises
-    ------
-    ValueError
-        If ``axis`` is not a 3-vector, has norm ``<= TOL``, or an input is not finite.
-    TypeError
-        If an input is not numeric.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> R = spin_rotations([0, 0, 2], [0.0, np.pi / 2])   # the length of axis is ignored
-    >>> np.round(R[1] @ [1, 0, 0], 12)
-    array([0., 1., 0.])
-    """
-    w = as_vectors(axis, "axis")
-    if w.shape != (3,):
-        raise ValueError(f"axis must be a single 3-vector of shape (3,), got shape {w.shape}")
-    norm = float(np.linalg.norm(w))
-    if norm <= TOL:
-        raise ValueError(
-            f"axis must be non-zero to define a direction of spin: ‖axis‖ = {norm:.1e} "
-            f"<= TOL = {TOL:.0e}"
-        )
-    t = as_angles(t, "t")
-    return so3.exp(w / norm, t)
+    def grab_frame(self, **savefig_kwargs):
+        png = _palette_png(self.fig, dpi=self.dpi, **savefig_kwargs)
+        self._saved_frames.append(base64.encodebytes(png).decode("ascii"))
 
 
-def spin_animation(axis=(0.0, 0.0, 1.0), frames=20, duration=2.0 * np.pi, dpi=60, size=3.2):
+def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=100, size=3.6):
     r"""An HTML animation of a body frame spinning at unit angular velocity about ``axis``.
 
     Frame :math:`k` shows the body frame :math:`R(t_k) = e^{\hat\omega t_k}` at time
-    :math:`t_k` (:func:`spin_times`, :func:`spin_rotations`), the world frame (dotted), the axis
-    and the circles that the body axis tips travel on. The player advances at one frame per
+    :math:`t_k` (:func:`course_lib.rodrigues.spin_times`,
+    :func:`course_lib.rodrigues.spin_rotations`), the world frame (dotted), the axis and the
+    circles that the body axis tips travel on. The player advances at one frame per
     :math:`T/N` seconds, so the picture turns at one radian per second: the angle is the time
     (eq. 125).
 
-    Built with matplotlib's ``FuncAnimation.to_jshtml`` (PNG frames embedded in the page, no
-    ffmpeg); the figure is closed so no static copy is displayed as well. Keep ``frames``,
-    ``dpi`` and ``size`` small: the HTML is stored in the notebook.
+    Built with matplotlib's JavaScript player (``HTMLWriter``: the frames are palette PNGs
+    embedded in the page, no ffmpeg); the figure is closed so no static copy is displayed as
+    well. The default frames are :data:`SPIN_PIXELS` = 360 pixels wide, the smallest at
+    which the title and the labels can be read.
 
     Parameters
     ----------
     axis : array_like, shape (3,), default (0, 0, 1)
         Direction of the angular velocity (normalised).
-    frames : int, default 20
+    frames : int, default 16
         Number of frames (2 to 120).
     duration : float, default 2π
         Time covered, in seconds (= radians turned).
-    dpi : int, default 60
+    dpi : int, default 100
         Resolution of the embedded frames (20 to 150).
-    size : float, default 3.2
-        Figure width and height in inches (1 to 8).
+    size : float, default 3.6
+        Figure width and height in inches (1 to 8); ``size * dpi`` is the frame width in
+        pixels (360 by default).
 
     Returns
     -------
@@ -945,15 +772,17 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=20, duration=2.0 * np.pi, dpi=60
 
     Examples
     --------
-    >>> html = spin_animation(frames=3, dpi=20)
-    >>> html.data.count("data:image/png;base64") >= 3
-    True
+    >>> html = spin_animation(frames=3)
+    >>> html.data.count("data:image/png;base64")
+    3
     """
     from IPython.display import HTML
 
     frames = as_count(frames, "frames", minimum=2)
     if frames > 120:
-        raise ValueError(f"frames must be at most 120 (the frames are stored in the notebook), got {frames}")
+        raise ValueError(
+            f"frames must be at most 120 (the frames are stored in the notebook), got {frames}"
+        )
     dpi = as_count(dpi, "dpi", minimum=20)
     if dpi > 150:
         raise ValueError(f"dpi must be between 20 and 150, got {dpi}")
@@ -987,9 +816,12 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=20, duration=2.0 * np.pi, dpi=60
 
     interval_ms = 1000.0 * float(times[1] - times[0])
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=interval_ms, blit=False)
+    writer = _PaletteHTMLWriter(fps=1000.0 / interval_ms, embed_frames=True, default_mode="loop")
     try:
-        with plt.rc_context({"savefig.dpi": dpi}):
-            html = anim.to_jshtml(default_mode="loop")
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp, "spin.html")
+            anim.save(str(path), writer=writer, dpi=dpi)
+            html = path.read_text()
     finally:
         plt.close(fig)
     return HTML(html)

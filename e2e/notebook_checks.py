@@ -1,0 +1,313 @@
+"""The checks on one notebook in the browser: open it, run all cells, then look at the model
+(errors, stderr) and at the page (typeset math, figures, widgets, dialogs), and screenshot it.
+
+``check_notebook(context, server, rel_path, out_dir, timeout)`` does all of it for one notebook
+and returns its problems (and whether the kernel stalled); the widgets are checked by
+:mod:`widget_checks`.
+"""
+
+import io
+import secrets
+import time
+import urllib.parse
+from pathlib import Path
+
+from common import ROOT, CheckFailed, KernelStalled, js, log, poll
+from widget_checks import check_widgets
+
+VIEWPORT = {"width": 1280, "height": 900}
+MAX_SCREENSHOT_HEIGHT = 16000  # Chromium's texture limit is a little above this
+# A notebook whose first cell has not started this long after "run all" is stalled, not slow.
+NO_START_SECONDS = 40
+MATH_MARKERS = ("$", "\\(", "\\[", "\\begin{")
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+
+
+def has_math(source):
+    return any(m in source for m in MATH_MARKERS)
+
+
+def wait_for_open(page, rel_path, timeout):
+    """Wait for the notebook's kernel to be idle; fail at once if a dialog asks for something.
+
+    A dialog at this point is the kernel picker (no or unknown kernelspec in the notebook's
+    metadata) or a build prompt: a student would see it too.
+    """
+    from playwright.sync_api import Error as PlaywrightError
+
+    dialog_since = None
+
+    def opened():
+        nonlocal dialog_since
+        try:
+            if page.evaluate(js("find_notebook"), rel_path):
+                return True
+            dialogs = page.evaluate(js("overlays"))["dialogs"]
+        except PlaywrightError:  # the page is still loading (navigation in progress)
+            return False
+        if not dialogs:
+            dialog_since = None
+        elif dialog_since is None:
+            dialog_since = time.monotonic()
+        elif time.monotonic() - dialog_since > 3.0:
+            raise CheckFailed(f"a dialog blocks the notebook while it opens: {dialogs[0]!r}")
+        return False
+
+    try:
+        poll(opened, timeout, "the notebook to open with an idle kernel")
+    except KernelStalled:
+        raise
+    except CheckFailed as exc:
+        if "dialog" in str(exc):
+            raise
+        raise KernelStalled(str(exc)) from None
+
+
+def wait_for_run(page, timeout):
+    """Wait until every non-empty code cell ran (or one failed) and the kernel is idle."""
+    stable = {"n": 0}
+    start = time.monotonic()
+
+    def done():
+        state = page.evaluate(js("state"))
+        code = [c for c in state["cells"] if c["type"] == "code" and c["source"].strip()]
+        started = any(c["count"] is not None or c["state"] == "running" for c in code)
+        if code and not started and time.monotonic() - start > NO_START_SECONDS:
+            raise KernelStalled(
+                f"no cell started within {NO_START_SECONDS} s of 'run all' "
+                f"(kernel status {state['kernel']!r}); the cells stayed queued"
+            )
+        errored = any(o["type"] == "error" for c in code for o in c["outputs"])
+        finished = all(c["count"] is not None for c in code)
+        busy = state["kernel"] != "idle" or any(c["state"] == "running" for c in code)
+        if (finished or errored) and not busy:
+            stable["n"] += 1
+        else:
+            stable["n"] = 0
+        return state if stable["n"] >= 3 else None  # idle on three polls in a row
+
+    try:
+        return poll(done, timeout, "all cells to run and the kernel to go idle")
+    except CheckFailed as exc:
+        raise KernelStalled(f"{exc}; {run_progress(page.evaluate(js('state')))}") from None
+
+
+def run_progress(state):
+    """Where a run stands, for a stall report: how many cells ran, which one is at work."""
+    code = [(i, c) for i, c in enumerate(state["cells"]) if c["type"] == "code"]
+    code = [(i, c) for i, c in code if c["source"].strip()]
+    ran = sum(c["count"] is not None for _, c in code)
+    waiting = next((i for i, c in code if c["count"] is None), None)
+    running = [i for i, c in code if c["state"] == "running"]
+    return (
+        f"{ran} of {len(code)} code cells ran, first not run: cell {waiting}, running: "
+        f"{running or 'none'}, kernel status {state['kernel']!r}"
+    )
+
+
+def check_outputs(state, problems):
+    """Every code cell ran, and no output of the model is an error or stderr."""
+    for i, cell in enumerate(state["cells"]):
+        if cell["type"] != "code":
+            continue
+        if cell["source"].strip() and cell["count"] is None:
+            problems.append(f"cell {i} did not run")
+        for o in cell["outputs"]:
+            if o["type"] == "error":
+                problems.append(f"cell {i}: error output {o['text'][:300]}")
+            elif o["type"] == "stream" and o["name"] == "stderr":
+                problems.append(f"cell {i}: stderr output {o['text'][:300]!r}")
+
+
+def check_dom(page, state, problems, timeout):
+    """MathJax, figures and widgets, as displayed. Waits for typesetting and images to load."""
+
+    def settled():
+        dom = page.evaluate(js("dom"))
+        return dom if not dom_problems(state, dom) else None
+
+    try:
+        dom = poll(settled, timeout, "math, figures and widgets to render")
+    except CheckFailed:
+        dom = page.evaluate(js("dom"))
+        problems.extend(dom_problems(state, dom))
+    for text in dom["stderr"]:
+        problems.append(f"error/stderr shown on the page: {text[:300]!r}")
+    for src in dom["broken"]:
+        problems.append(f"image failed to load: {src}")
+    for text in dom["widgetErrors"]:
+        problems.append(f"widget failed to render: {text[:300]!r}")
+    return dom
+
+
+def output_problem(i, j, o, d):
+    """What is wrong with output j of cell i as displayed (d) for the model's output o, if any."""
+    images = [m for m in o["mimes"] if m.startswith("image/")]
+    if WIDGET_VIEW in o["mimes"]:
+        if not d["widget"]:
+            return f"cell {i} output {j}: widget not rendered"
+        if d["sliders"] and d["widgetLoaded"] == 0 and d["canvases"] == 0:
+            return f"cell {i} output {j}: slider widget shows no figure"
+    elif images and d["loaded"] < 1:
+        return f"cell {i} output {j}: image output ({images[0]}) not displayed"
+    elif "text/html" in o["mimes"] and d["loaded"] < d["imgs"]:
+        return (
+            f"cell {i} output {j}: {d['imgs'] - d['loaded']} image(s) of an HTML output not loaded"
+        )
+    return None
+
+
+def dom_problems(state, dom):
+    out = []
+    if len(dom["cells"]) != len(state["cells"]):
+        return [f"{len(dom['cells'])} cells on the page, {len(state['cells'])} in the model"]
+    for i, (cell, shown) in enumerate(zip(state["cells"], dom["cells"])):
+        if cell["type"] == "markdown" and has_math(cell["source"]):
+            if shown["mjx"] == 0:
+                out.append(f"markdown cell {i} has LaTeX but no MathJax output (mjx-container)")
+            if shown["merror"]:
+                out.append(f"markdown cell {i}: {shown['merror']} MathJax error(s) (mjx-merror)")
+        if cell["type"] != "code":
+            continue
+        if len(shown["outputs"]) != len(cell["outputs"]):
+            out.append(
+                f"cell {i}: {len(cell['outputs'])} outputs in the model, "
+                f"{len(shown['outputs'])} on the page"
+            )
+            continue
+        for j, (o, d) in enumerate(zip(cell["outputs"], shown["outputs"])):
+            problem = output_problem(i, j, o, d)
+            if problem:
+                out.append(problem)
+    return out
+
+
+def check_overlays(page, problems, when):
+    overlays = page.evaluate(js("overlays"))
+    for text in overlays["dialogs"]:
+        problems.append(f"dialog on screen {when}: {text!r}")
+    for text in overlays["toasts"]:
+        problems.append(f"notification on screen {when}: {text!r}")
+
+
+def screenshot(page, path):
+    """A PNG of the whole notebook, however long: JupyterLab, with the notebook unrolled.
+
+    The viewport is made as tall as the notebook. A notebook taller than Chromium can capture
+    in one go (``MAX_SCREENSHOT_HEIGHT``) is shot in tiles, scrolling the notebook between
+    them, and the tiles are stacked into one image.
+    """
+    geo = page.evaluate(js("scroller"), None)
+    if geo is None:
+        page.screenshot(path=str(path), full_page=True)
+        return
+    chrome = geo["viewport"] - geo["clientHeight"]
+    height = int(min(max(geo["scrollHeight"] + chrome, VIEWPORT["height"]), MAX_SCREENSHOT_HEIGHT))
+    page.set_viewport_size({"width": VIEWPORT["width"], "height": height})
+    try:
+        page.wait_for_timeout(1000)  # relayout
+        geo = page.evaluate(js("scroller"), 0)
+        page.wait_for_timeout(500)
+        if geo["scrollHeight"] <= geo["clientHeight"]:
+            page.screenshot(path=str(path), full_page=True)
+            return
+        stack_tiles(page, geo).save(path, optimize=True)
+    finally:
+        page.set_viewport_size(VIEWPORT)
+
+
+def stack_tiles(page, geo):
+    """Shoot the notebook one viewport at a time and stack the pieces into one image."""
+    from PIL import Image  # Pillow comes with matplotlib
+
+    top, view, total = geo["top"], geo["clientHeight"], geo["scrollHeight"]
+    pieces, offset = [], 0
+    while offset < total:
+        geo = page.evaluate(js("scroller"), offset)
+        page.wait_for_timeout(400)
+        shot = Image.open(io.BytesIO(page.screenshot()))
+        skip = offset - geo["scrollTop"]  # the last tile stops short: drop what was shot twice
+        if offset == 0:
+            pieces.append(shot.crop((0, 0, shot.width, top)))  # menu bar and toolbar
+        pieces.append(shot.crop((0, top + skip, shot.width, top + view)))
+        offset += view
+    pieces.append(shot.crop((0, top + view, shot.width, shot.height)))  # status bar
+    sheet = Image.new("RGB", (pieces[0].width, sum(p.height for p in pieces)), "white")
+    y = 0
+    for piece in pieces:
+        sheet.paste(piece, (0, y))
+        y += piece.height
+    return sheet
+
+
+def open_and_run(page, server, rel_path, problems, timeout):
+    """Open the notebook in a fresh workspace, run all cells, return the model's final state."""
+    workspace = f"e2e-{secrets.token_hex(4)}"
+    url = f"{server.url}/lab/workspaces/{workspace}/tree/{urllib.parse.quote(rel_path)}"
+    page.goto(f"{url}?reset&token={server.token}")
+    t0 = time.monotonic()
+    wait_for_open(page, rel_path, timeout=90)
+    check_overlays(page, problems, "after opening")
+    page.evaluate(js("run_all"))
+    state = wait_for_run(page, timeout)
+    n_code = sum(1 for c in state["cells"] if c["type"] == "code")
+    log(f"  ran {n_code} code cells in {time.monotonic() - t0:.1f} s")
+    return state
+
+
+def check_notebook(context, server, rel_path, out_dir, timeout):
+    """Open, run and check one notebook.
+
+    Returns the problems found (empty: passed), whether the kernel stalled, and the slider
+    release -> redrawn figure latencies measured (ms).
+    """
+    from playwright.sync_api import Error as PlaywrightError
+
+    problems, latencies = [], []
+    stalled = False
+    page = context.new_page()
+    page_errors = []
+    page.on("pageerror", lambda exc: page_errors.append(str(exc)))
+    try:
+        state = open_and_run(page, server, rel_path, problems, timeout)
+        check_outputs(state, problems)
+        dom = check_dom(page, state, problems, timeout=60)
+        n_math = sum(c["mjx"] for c in dom["cells"])
+        n_img = sum(o["loaded"] + o["widgetLoaded"] for c in dom["cells"] for o in c["outputs"])
+        n_live = sum(o["canvases"] > 0 for c in dom["cells"] for o in c["outputs"])
+        log(f"  {n_math} typeset formulas, {n_img} images displayed, {n_live} live figure(s)")
+        expected = sum(
+            WIDGET_VIEW in o["mimes"]
+            for c in state["cells"]
+            if c["type"] == "code"
+            for o in c["outputs"]
+        )
+        shots = out_dir / Path(rel_path).stem
+        latencies = check_widgets(page, expected, problems, timeout=60, shot_prefix=shots)
+        check_overlays(page, problems, "after running")
+    except KernelStalled as exc:
+        problems.append(str(exc))
+        stalled = True
+    except CheckFailed as exc:
+        problems.append(str(exc))
+    except PlaywrightError as exc:  # e.g. a slider that cannot be found or dragged
+        problems.append(f"browser automation failed: {str(exc).splitlines()[0]}")
+    finally:
+        problems.extend(f"JavaScript error on the page: {e[:300]}" for e in page_errors)
+        finish_page(page, out_dir / f"{Path(rel_path).stem}.png", problems)
+    return problems, stalled, latencies
+
+
+def finish_page(page, shot, problems):
+    """Screenshot the page, shut its kernel down and close it (a failure here is a problem too,
+    but must not hide the ones found before)."""
+    try:
+        screenshot(page, shot)
+        log(f"  screenshot {shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot}")
+    except Exception as exc:
+        problems.append(f"screenshot failed: {exc}")
+    try:
+        page.evaluate(js("shutdown_kernel"))
+    except Exception:
+        pass
+    page.close()

@@ -85,7 +85,7 @@ FRAME_COLORS = ("tab:red", "tab:green", "tab:blue")
 #: figure, axes and text, never through rcParams: a ``plt.rc_context`` around figure creation
 #: would also roll back what the notebook backend sets when the first figure is made
 #: (interactive mode), and later figures would not be shown.
-DPI = 100
+DPI = 90
 FIGSIZE = (4.8, 4.8)
 PANEL_SIZE = 4.2
 FONT_SIZE = 11
@@ -360,7 +360,7 @@ def axes3d(title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$",
     labels : sequence of 3 str
         Axis labels (mathtext allowed).
     figsize : (float, float)
-        Figure size in inches, used only when a new figure is created (dpi is fixed at 100).
+        Figure size in inches, used only when a new figure is created (dpi is fixed at DPI = 90).
 
     Returns
     -------
@@ -414,7 +414,7 @@ def axes2d(title, ax=None, lim=1.5, labels=("$x$", "$y$"), figsize=FIGSIZE):
     labels : sequence of 2 str
         Axis labels (mathtext allowed).
     figsize : (float, float)
-        Figure size in inches for a new figure (dpi is fixed at 100).
+        Figure size in inches for a new figure (dpi is fixed at DPI = 90).
 
     Returns
     -------

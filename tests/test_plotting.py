@@ -507,7 +507,7 @@ def test_draw_segment_label_is_off_the_centre_of_a_box_with_symmetric_marks(turn
     (label,) = _texts(seg)
     box = _screen_box(label, ax, renderer)
     centre = ax.transData.transform(proj3d.proj_transform(*R @ [0, 0, 0.05], ax.get_proj())[:2])
-    assert not box.padded(8).contains(*centre)  # clear of the frame's origin ...
+    assert not box.padded(8 * DPI / 100).contains(*centre)  # clear of the frame's origin ...
     names = {t.get_text(): _screen_box(t, ax, renderer) for t in _texts(phone)}
     for name in ("$x_{B}$", "$y_{B}$", "$z_{B}$"):  # ... and of the labels of its axes
         assert not box.overlaps(names[name]), name

@@ -9,7 +9,7 @@ notebook, ``--apply``:
    ``pyproject.toml``, or says what to do while that URL is unset;
 2. executes the notebook in a fresh kernel, in its own folder, without recording timings;
 3. cleans it: no widget state, no execution timestamps, widget views without model ids,
-   deterministic animation ids, PNGs re-encoded with a 256-colour palette;
+   deterministic animation ids, PNGs re-encoded with a 128-colour palette;
 4. writes the file only if its text changed, and prints the size and execution time.
 
 ``--check`` does steps 1 and 3 in memory without executing and exits 1 if a file would change
@@ -43,7 +43,7 @@ from course_links import repository_url  # noqa: E402
 
 SETUP_ID = "course-setup"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
-PNG_COLOURS = 256
+PNG_COLOURS = 128
 CELL_TIMEOUT = 300  # seconds; a safety net, never reached (chapters take well under 60 s)
 _UUID_HEX = re.compile(r"(?<![0-9a-f])[0-9a-f]{32}(?![0-9a-f])")
 _FRAME = re.compile(r'"data:image/png;base64,([A-Za-z0-9+/=\\\n]+)"')
@@ -89,7 +89,7 @@ def put_setup_cell(nb, url=None):
 
 
 def small_png(b64):
-    """A PNG (base64) re-encoded with a 256-colour palette, if that is smaller.
+    """A PNG (base64) re-encoded with a 128-colour palette, if that is smaller.
 
     Matplotlib writes 8-bit RGBA truecolour; a figure of lines and text on white has far fewer
     distinct colours, and a palette PNG of it looks the same at 40-45 % of the bytes. Already

@@ -28,6 +28,32 @@ lab: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest
 
+# Unit, property and doctests without executing any notebook (nbval cells are notebook_exec too).
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -m "not notebook_exec" -q
+
+# Put the setup cell first, execute and clean every chapter (idempotent: a re-run changes
+# nothing), then refresh the README's launch links from pyproject.toml.
+notebooks: $(STAMP)
+	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb
+	$(BIN)/python tools/course_links.py --readme
+
+# The course website in build/site/ from the student copies (SOLUTIONS=1: the instructor's);
+# its tools (site/requirements.txt, MathJax from npm) are installed on first use only.
+SITE_STAMP := $(VENV)/.site-installed
+SOLUTIONS  ?=
+$(SITE_STAMP): $(STAMP) site/requirements.txt
+	$(BIN)/python -m pip install --quiet -r site/requirements.txt
+	touch $(SITE_STAMP)
+
+site: $(SITE_STAMP)
+	$(BIN)/python site/build.py $(if $(SOLUTIONS),--solutions)
+
+# Builds the student site, then opens its pages in headless Chromium (/usr/bin/chromium).
+site-test: $(SITE_STAMP)
+	$(BIN)/python site/build.py
+	$(BIN)/python -m pytest site/test_site.py -q
+
 # Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium): outputs,
 # math, figures, every slider and a mouse drag of each explorer's 3D view; screenshots in build/e2e/.
 e2e: $(STAMP)

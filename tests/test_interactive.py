@@ -536,7 +536,8 @@ def test_explorer_stores_a_small_png_snapshot_and_a_description(make):
     assert png.startswith(b"\x89PNG") and len(png) < 40_000
     from PIL import Image
 
-    assert Image.open(io.BytesIO(png)).size == (520, 480)
+    width, height = widget.figure.get_size_inches() * widget.figure.dpi
+    assert Image.open(io.BytesIO(png)).size == (round(width), round(height))
 
 
 def screen_box(text, ax, renderer):

@@ -1,11 +1,21 @@
 r"""Exercises of chapter 1 (§0.1.1 rigid bodies and rigid body motions)."""
 
+import sympy as sp
+
 from course_lib.exercises._model import Choice, Exercise, Expr, Value
 from course_lib.symbolic import t, x, xx, xy, y, yy, z
 
 CHAPTER = 1
 SETUP = ("import numpy as np\nimport sympy as sp\n"
          "from course_lib.exercises import check, t, x, y, z, xx, yy, xy")
+
+_HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])      # p(t), as in the statement
+_TANGENT_PROPERTIES = (
+    (lambda M: M.dot(M) - 1, "your vector is not a unit vector: divide ṗ by its length ‖ṗ‖."),
+    (lambda M: M.cross(_HELIX.diff(t)),
+     "your vector has length 1 but does not point along ṗ(t): differentiate each component "
+     "(the chain rule brings out the 2 of cos 2t and sin 2t)."),
+)
 
 EXERCISES = [
     Exercise(
@@ -91,6 +101,7 @@ A particle follows the helix $p(t) = (\cos 2t,\ \sin 2t,\ 3t)$ (a trajectory as 
             "sin² + cos² = 1.",
         mistakes={"velocity": "that is the velocity ṗ; divide it by its length ‖ṗ‖ (a unit "
                               "vector has length 1)."},
+        properties=_TANGENT_PROPERTIES,
     ),
     Exercise(
         name="lagrange_identity", chapter=1, number=5, level="core",

@@ -15,7 +15,7 @@ EXERCISES = [
 Let $R, S \in$ SO(3) be any two rotations and $M$ any reflection ($M^TM = I$, $\det M = -1$).
 Which of these matrices are **always** in SO(3) (Definition 2)?
 
-(a) $RS$ &nbsp; (b) $-R$ &nbsp; (c) $R^T S$ &nbsp; (d) $M R M$ &nbsp; (e) $R + S - I$ &nbsp;
+(a) $RSR^T$ &nbsp; (b) $-R$ &nbsp; (c) $R^T S$ &nbsp; (d) $M R M$ &nbsp; (e) $R + S - I$ &nbsp;
 (f) $M R$
 
 Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
@@ -69,7 +69,8 @@ $(a, b, c)$, and check $\det R = +1$.
         statement=r"""
 Let `A` stand for $R_{ab}$ and `B` for $R_{cb}$ (two rotation matrices, `MatrixSymbol`s; mind
 the order of the subscripts of `B`). Write $R_{ca}$ in terms of `A` and `B`, **without an
-inverse** (use Proposition 5 and the composition $R_{ca} = R_{cb}R_{ba}$). Give a matrix expression in `A`, `B` (products and `.T`).
+inverse** (use Proposition 5 and the composition $R_{ca} = R_{cb}R_{ba}$). Give a matrix
+expression in `A`, `B` (products and `.T`).
 """,
         answer=Expr(shape=(3, 3), allowed=(A, B), matrix_degree=2),
         tip="For a rotation R⁻¹ = Rᵀ, so R_ba = R_abᵀ; the inner subscripts of a product "

@@ -3,8 +3,8 @@
 SOLUTIONS = {
     "which_in_so3": '''\
 # XᵀX = I and det X = +1 for each, from (XY)ᵀ = YᵀXᵀ and det(XY) = det X det Y:
-# (a) (RS)ᵀRS = SᵀRᵀRS = I, det = 1       (b) det(−R) = (−1)³ = −1
-# (c) as (a), det = 1                      (d) det = (−1)(1)(−1) = 1, MᵀM = I
+# (a) (RSRᵀ)ᵀRSRᵀ = RSᵀSRᵀ = I, det = 1  (b) det(−R) = (−1)³ = −1
+# (c) (RᵀS)ᵀRᵀS = I, det = 1                     (d) det = (−1)(1)(−1) = 1, MᵀM = I
 # (e) not orthogonal in general: R = S = R_z(90°) gives 2R − I
 # (f) det = −1
 Q = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])               # R = S = R_z(90°)

@@ -501,3 +501,10 @@ def test_a_correct_float32_answer_is_not_reported_as_wrong_entries(dtype):
     wrong = check("half_turn_axis", (right + [0, 0, 1e-3]).astype(dtype))
     assert wrong.message.startswith("half_turn_axis: component 3 is wrong. Also, your answer is "
                                     "stored in single precision"), str(wrong)
+
+
+def test_regression_a_huge_float32_answer_is_checked_quickly():
+    import time
+    start = time.perf_counter()
+    result = check("chain_vector", np.array([1e30, 3, -2], dtype=np.float32))
+    assert time.perf_counter() - start < 1.0 and "component 1 is wrong" in result.message

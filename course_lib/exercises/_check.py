@@ -245,6 +245,9 @@ def _single_precision(answer):
     return False
 
 
+_MAX_REACH = 1024        # cells scanned each side: float32 rounding of entries up to about 4
+
+
 def _single_precision_matches(name, v, cells):
     """Per entry: is it within float32 rounding (a few units of 2⁻²⁴, relative) of the right
     cell? Scans the neighbouring cells of the digest grid."""
@@ -253,6 +256,9 @@ def _single_precision_matches(name, v, cells):
     ok = []
     for i, (x, (off, dig)) in enumerate(zip(np.ravel(v), cells)):
         reach = int(np.ceil(8 * np.finfo(np.float32).eps * max(1.0, abs(x)) / E.STEP))
+        if reach > _MAX_REACH:                       # a huge entry: not worth the scan
+            ok.append(False)
+            continue
         centre = int(np.floor((x + off * E.STEP / 2) / E.STEP))
         ok.append(any(E.digest(name, i, centre + k) == dig for k in range(-reach, reach + 1)))
     return np.array(ok)

@@ -1,5 +1,7 @@
 r"""Exercises of chapter 1 (§0.1.1 rigid bodies and rigid body motions)."""
 
+import sympy as sp
+
 from course_lib.exercises._model import Choice, Exercise, Expr, Value
 from course_lib.symbolic import t, x, xx, xy, y, yy, z
 
@@ -7,22 +9,38 @@ CHAPTER = 1
 SETUP = ("import numpy as np\nimport sympy as sp\n"
          "from course_lib.exercises import check, t, x, y, z, xx, yy, xy")
 
+_HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])      # p(t), as in the statement
+_TANGENT_PROPERTIES = (
+    (lambda M: M.dot(M) - 1, "your vector is not a unit vector: divide ṗ by its length ‖ṗ‖."),
+    (lambda M: M.cross(_HELIX.diff(t)),
+     "your vector has length 1 but does not point along ṗ(t): differentiate each component "
+     "(the chain rule brings out the 2 of cos 2t and sin 2t)."),
+)
+
 EXERCISES = [
     Exercise(
         name="coords_by_projection", chapter=1, number=1, level="warm-up",
         title="Coordinates by projection",
         statement=r"""
-A right-handed orthonormal frame has the basis vectors (in reference coordinates)
-$e_1 = (1/\sqrt2,\ 1/\sqrt2,\ 0)$, $e_2 = (-1/\sqrt2,\ 1/\sqrt2,\ 0)$, $e_3 = (0,\ 0,\ 1)$.
-The point $p$ has reference coordinates $(1,\ 3,\ 2)$. Find its coordinates
-$(p \cdot e_1,\ p \cdot e_2,\ p \cdot e_3)$ in the frame $\{e_1, e_2, e_3\}$
-(equations (3)–(5)). Give a 3-vector (list, numpy array or sympy Matrix).
+A right-handed orthonormal frame has its origin at $o = (1,\ 1,\ 0)$, and its three axes point
+along the directions $(1,\ 1,\ 0)$, $(-1,\ 1,\ 0)$ and $(0,\ 0,\ 2)$ (in reference
+coordinates; these are directions, not yet unit vectors). The point $p$ has reference
+coordinates $(3,\ 1,\ 2)$. Find its coordinates in this frame, measured from the frame's own
+origin (equations (3)–(5) and the note on them). Give a 3-vector (list, numpy array or sympy
+Matrix).
 """,
         answer=Value(shape=(3,)),
-        tip="Each coordinate is the projection of p onto one basis vector (equations (3)–(5)).",
-        mistakes={"weights": "you combined the basis vectors with p's entries as weights; a "
-                             "coordinate is a projection, the dot product of p with one basis "
-                             "vector."},
+        tip="First make the basis vectors unit vectors eᵢ; each coordinate is then the "
+            "projection (p − o) · eᵢ.",
+        mistakes={
+            "weights": "you combined the basis vectors with the entries of p − o as weights; a "
+                       "coordinate is a projection, the dot product of p − o with one basis "
+                       "vector.",
+            "no_origin": "you projected p itself; the frame's origin is o, so project the "
+                         "vector p − o from the origin to the point.",
+            "unnormalized": "the given directions are not unit vectors: divide each by its "
+                            "length before projecting (equation (1)).",
+        },
     ),
     Exercise(
         name="angle_from_lengths", chapter=1, number=2, level="warm-up",
@@ -47,21 +65,27 @@ Give the angle in radians, in $[0, \pi]$.
         statement=r"""
 Which of these maps $g:\mathbb{R}^3\to\mathbb{R}^3$ are rigid body transformations in the sense
 of Definition 1 (they keep every distance **and** the cross product,
-$g_*(v) \times g_*(w) = g_*(v \times w)$)?
+$g_*(v) \times g_*(w) = g_*(v \times w)$)? Write each as $g(p) = Mp + d$ first.
 
-(a) $g(p) = -p$ &nbsp; (b) $g(p) = R_z(\pi/3)\,p + (1, 2, 0)$ &nbsp; (c) $g(p) = 2p$ &nbsp;
-(d) $g(p) = (p_2, p_1, p_3)$ &nbsp; (e) $g(p) = (p_2, p_3, p_1)$ &nbsp;
-(f) $g(p) = p + (0, 0, 5)$
+(a) the reflection in the plane $x = y$ &nbsp;
+(b) the half turn about the line through the origin along $(1, 1, 0)$ &nbsp;
+(c) the point reflection $p \mapsto -p$, followed by the half turn about the $z$ axis &nbsp;
+(d) the reflection in the plane $x = 0$, followed by the reflection in the plane $y = 0$ &nbsp;
+(e) the translation by $(1, 2, 3)$, followed by the quarter turn about the $x$ axis &nbsp;
+(f) the point reflection $p \mapsto -p$, followed by the translation by $(0, 0, 1)$
 
 Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
 """,
         answer=Choice(letters="abcdef"),
-        tip="Test each map on e₁, e₂: are the distances kept, and is g(e₁) × g(e₂) = g(e₃)?",
+        tip="Every map here keeps distances; test the cross product on e₁, e₂: is "
+            "g_*(e₁) × g_*(e₂) = g_*(e₃)? (For g(p) = Mp + d that is det M = +1.)",
         mistakes={
             "mirrors": "some of your maps keep every distance but turn a right-handed frame into "
-                       "a left-handed one: compare g(e₁) × g(e₂) with g(e₃).",
-            "translation": "a translation keeps distances and cross products too "
-                           "(Definition 1 allows g(p) = Rp + d).",
+                       "a left-handed one: compare g_*(e₁) × g_*(e₂) with g_*(e₃).",
+            "translation": "a translation keeps distances and cross products of vectors too "
+                           "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
+            "two_mirrors": "two reflections one after the other are not a reflection: each "
+                           "flips the handedness, and the second flips it back.",
         },
     ),
     Exercise(
@@ -77,6 +101,7 @@ A particle follows the helix $p(t) = (\cos 2t,\ \sin 2t,\ 3t)$ (a trajectory as 
             "sin² + cos² = 1.",
         mistakes={"velocity": "that is the velocity ṗ; divide it by its length ‖ṗ‖ (a unit "
                               "vector has length 1)."},
+        properties=_TANGENT_PROPERTIES,
     ),
     Exercise(
         name="lagrange_identity", chapter=1, number=5, level="core",

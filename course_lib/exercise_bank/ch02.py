@@ -10,66 +10,76 @@ SETUP = ("import numpy as np\nimport sympy as sp\n"
 EXERCISES = [
     Exercise(
         name="which_in_so3", chapter=2, number=1, level="warm-up",
-        title="Which matrices are rotations?",
+        title="Which products are rotations?",
         statement=r"""
-Which of these matrices are in SO(3) (Definition 2)?
+Let $R, S \in$ SO(3) be any two rotations and $M$ any reflection ($M^TM = I$, $\det M = -1$).
+Which of these matrices are **always** in SO(3) (Definition 2)?
 
-(a) $\begin{pmatrix}0&-1&0\\1&0&0\\0&0&1\end{pmatrix}$ &nbsp;
-(b) $\begin{pmatrix}1&0&0\\0&1&0\\0&0&-1\end{pmatrix}$ &nbsp;
-(c) $\begin{pmatrix}0.6&0.8&0\\-0.8&0.6&0\\0&0&1\end{pmatrix}$ &nbsp;
-(d) $\begin{pmatrix}1&1&0\\0&1&0\\0&0&1\end{pmatrix}$ &nbsp;
-(e) $\begin{pmatrix}0&0&1\\1&0&0\\0&1&0\end{pmatrix}$ &nbsp;
-(f) $-I$
+(a) $RSR^T$ &nbsp; (b) $-R$ &nbsp; (c) $R^T S$ &nbsp; (d) $M R M$ &nbsp; (e) $R + S - I$ &nbsp;
+(f) $M R$
 
 Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
 """,
         answer=Choice(letters="abcdef"),
-        tip="Check RᵀR = I (Proposition 3) and det R = +1 (Proposition 4) for each.",
-        mistakes={"orthogonal": "RᵀR = I is not enough: a rotation also has det R = +1 "
-                                "(Proposition 4); a reflection has det R = −1."},
+        tip="For each, check XᵀX = I (Proposition 3) and det X = +1 (Proposition 4): use "
+            "(XY)ᵀ = YᵀXᵀ, det(XY) = det X det Y and det(−X) = (−1)³ det X.",
+        mistakes={
+            "orthogonal": "XᵀX = I is not enough: a rotation also has det = +1 "
+                          "(Proposition 4); −R and MR have det = −1.",
+            "two_reflections": "M R M has two factors of det −1: det(MRM) = (−1)(+1)(−1) = +1, "
+                               "and it is orthogonal as a product of orthogonal matrices.",
+        },
     ),
     Exercise(
         name="vb_from_va", chapter=2, number=2, level="warm-up",
         title="From a-coordinates to b-coordinates",
         statement=r"""
-Frame $B$'s axes, written in frame $A$, are $x_{ab} = (1, 0, 0)$, $y_{ab} = (0, 0, 1)$ and
-$z_{ab} = (0, -1, 0)$. A vector has the coordinates $v_a = (1, 2, 3)$ in $A$. Find its
-coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-vector.
+Two of frame $B$'s axes, written in frame $A$, are $x_{ab} = (0, 0, 1)$ and
+$y_{ab} = (1, 0, 0)$; $B$ is right-handed. A vector has the coordinates $v_a = (1, 2, 3)$ in
+$A$. Find its coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
-        tip="v_a = R_ab v_b, and R_ab⁻¹ = R_abᵀ (Proposition 5).",
-        mistakes={"direction": "R_ab turns b-coordinates into a-coordinates (v_a = R_ab v_b); "
-                               "you need the other direction, R_ba = R_abᵀ."},
+        tip="The third axis is z_ab = x_ab × y_ab; then v_a = R_ab v_b, and R_ab⁻¹ = R_abᵀ "
+            "(Proposition 5).",
+        mistakes={
+            "direction": "R_ab turns b-coordinates into a-coordinates (v_a = R_ab v_b); "
+                         "you need the other direction, R_ba = R_abᵀ.",
+            "left_handed": "your z_ab points the wrong way: a right-handed frame has "
+                           "z_ab = x_ab × y_ab, in that order.",
+        },
     ),
     Exercise(
         name="complete_rotation", chapter=2, number=3, level="core",
         title="Complete a rotation matrix",
         statement=r"""
-Find the last column $(a, b, c)$ that makes
-$R = \begin{pmatrix} 2/3 & -2/3 & a \\ 1/3 & 2/3 & b \\ 2/3 & 1/3 & c \end{pmatrix}$
-a rotation matrix (check first that the two given columns are orthonormal). Give the 3-vector
-$(a, b, c)$.
+Find the three missing entries $(a, b, c)$ that make
+$R = \begin{pmatrix} 2/3 & -2/3 & a \\ 1/3 & b & -2/3 \\ c & 1/3 & 2/3 \end{pmatrix}$
+a rotation matrix (Proposition 3: its columns are orthonormal). Give the 3-vector
+$(a, b, c)$, and check $\det R = +1$.
 """,
         answer=Value(shape=(3,)),
-        tip="The columns of a rotation are a right-handed orthonormal frame: r₃ = r₁ × r₂.",
-        mistakes={"det": "with this column det R = −1 (a reflection): the third column is "
-                         "r₁ × r₂, in that order."},
+        tip="Unit columns fix |a|, |b| and |c|; perpendicular columns (r₁ · r₃ = 0, "
+            "r₁ · r₂ = 0) then fix their signs.",
+        mistakes={"abs": "the unit lengths fix only |a|, |b|, |c|: the signs come from the "
+                         "orthogonality of the columns, r₁ · r₃ = 0 and r₁ · r₂ = 0."},
     ),
     Exercise(
         name="inverse_of_product", chapter=2, number=4, level="core",
         title="Undoing two rotations",
         statement=r"""
-Let `A` stand for $R_{ab}$ and `B` for $R_{bc}$ (two rotation matrices, `MatrixSymbol`s), so
-$R_{ac} = AB$. Write $R_{ca} = R_{ac}^{-1}$ in terms of `A` and `B`, **without an inverse**
-(use Proposition 5). Give a matrix expression in `A`, `B` (products and `.T`).
+Let `A` stand for $R_{ab}$ and `B` for $R_{cb}$ (two rotation matrices, `MatrixSymbol`s; mind
+the order of the subscripts of `B`). Write $R_{ca}$ in terms of `A` and `B`, **without an
+inverse** (use Proposition 5 and the composition $R_{ca} = R_{cb}R_{ba}$). Give a matrix
+expression in `A`, `B` (products and `.T`).
 """,
         answer=Expr(shape=(3, 3), allowed=(A, B), matrix_degree=2),
-        tip="For a rotation R⁻¹ = Rᵀ; and the inverse of a product is the product of the "
-            "inverses in reverse order.",
+        tip="For a rotation R⁻¹ = Rᵀ, so R_ba = R_abᵀ; the inner subscripts of a product "
+            "must match (R_cb R_ba).",
         mistakes={
-            "order": "order: (AB)ᵀ = BᵀAᵀ; the factor applied last is undone first.",
-            "forward": "that is R_ac itself; the exercise asks for the opposite direction, "
-                       "R_ca = R_ac⁻¹.",
+            "order": "order: the inner subscripts must meet, R_cb R_ba, so B comes first.",
+            "forward": "that is R_ac; the exercise asks for the opposite direction, "
+                       "R_ca = R_acᵀ.",
+            "bc": "B stands for R_cb, not R_bc: here R_bc = Bᵀ, and R_ca = R_cb R_ba.",
         },
     ),
     Exercise(
@@ -105,16 +115,18 @@ Give a 3x3 matrix expression.
         title="Two mirrors make a rotation",
         statement=r"""
 The mirrors $M_i = I - 2 n_i n_i^T$ have the unit normals $n_1 = (1, 0, 0)$ and
-$n_2 = (\cos 30°, \sin 30°, 0)$. Show that $R = M_2 M_1$ is in SO(3) (each $M_i$ is orthogonal
-with $\det M_i = -1$) and that it is a rotation about $z$. By what angle $\theta$ does it turn,
-with $R = R_z(\theta)$ and $\theta \in (-\pi, \pi]$? Give a number (radians).
+$n_2 = (\cos\psi, \sin\psi, 0)$. Show that $R = M_2 M_1$ is in SO(3) (each $M_i$ is
+orthogonal with $\det M_i = -1$) and that it is a rotation about $z$, $R = R_z(\theta)$; find
+$\theta$ as a function of $\psi$. Then find the $\psi \in (0, \pi)$ for which
+$M_2 M_1 = R_z(100°)$. Give $\psi$ (radians).
 """,
         answer=Value(shape=(), angle=True),
-        tip="Compute R = M₂M₁ and compare it with R_z(θ) (its first column is (cos θ, sin θ, 0)).",
+        tip="Compute R = M₂M₁ with sympy for a symbolic ψ and compare its first column with "
+            "(cos θ, sin θ, 0).",
         mistakes={
-            "half": "that is the angle between the two mirrors; two reflections turn by twice "
-                    "that angle.",
-            "order": "R = M₂M₁ applies M₁ first; your angle is the one of M₁M₂.",
+            "double": "that ψ makes M₂M₁ turn by twice that angle: two reflections turn by "
+                      "twice the angle between their mirrors.",
+            "order": "with that ψ it is M₁M₂ that equals R_z(100°): R = M₂M₁ applies M₁ first.",
         },
     ),
 ]

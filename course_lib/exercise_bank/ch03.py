@@ -1,40 +1,31 @@
 r"""Exercises of chapter 3 (§0.1.3 exponential coordinates)."""
 
-import sympy as sp
-
 from course_lib.exercises._model import Exercise, Expr, Value
-from course_lib.symbolic import W, a, omega, t, theta, u, x_0
+from course_lib.symbolic import W, omega, t, theta, u
 
 CHAPTER = 3
 SETUP = ("import numpy as np\nimport sympy as sp\n"
          "from course_lib.exercises import check, hat, omega, theta, W, u, a, t, x_0")
 
 _W = tuple(omega)
-_ODE_PROPERTIES = (
-    (lambda M: M[0].subs(t, 1) - x_0, "the initial condition fails: your x(1) is not x₀."),
-    (lambda M: M[0].diff(t) - a * M[0],
-     "x(1) = x₀ holds, but your x(t) does not satisfy ẋ = a x."),
-)
-_PLANAR_PROPERTIES = (
-    (lambda M: M.subs(t, 0) - sp.Matrix([x_0, 0]),
-     "the initial condition fails: your x(0) is not (x₀, 0)."),
-    (lambda M: M.diff(t) - sp.Matrix([[0, -a], [a, 0]]) * M,
-     "x(0) = (x₀, 0) holds, but your x(t) does not satisfy ẋ = A x."),
-)
 
 EXERCISES = [
     Exercise(
         name="ode_shifted", chapter=3, number=1, level="warm-up",
-        title="The scalar ODE with a later start",
+        title="The scalar ODE from two measurements",
         statement=r"""
-Solve $\dot x(t) = a\,x(t)$ with the condition $x(1) = x_0$ given at time $t = 1$ (not at
-$t = 0$; compare equations (95)–(106)). Give $x(t)$ as an expression in `a`, `t`, `x_0`.
+A quantity obeys $\dot x(t) = a\,x(t)$ with an unknown constant $a$ (equation (95)). It is
+measured twice: $x(1) = 3$ and $x(3) = 12$. Using the solution (106), find $a$ and the initial
+value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
 """,
-        answer=Expr(shape=(), domain=(a, t, x_0)),
-        tip="Every solution is C e^{at}; choose the constant C so that x(1) = x₀.",
-        mistakes={"at_zero": "that solution has x(0) = x₀; here the condition is given at "
-                             "t = 1."},
-        properties=_ODE_PROPERTIES,
+        answer=Value(shape=(2,)),
+        tip="Every solution is x(t) = e^{at} x(0); divide the two measurements to get rid of "
+            "x(0).",
+        mistakes={
+            "interval": "x(3)/x(1) = e^{a(3 − 1)}: the two measurements are 2 time units apart, "
+                        "not 3.",
+            "at_zero": "x(1) = 3 is measured at t = 1, not at t = 0: x(0) = x(1) e^{−a}.",
+        },
     ),
     Exercise(
         name="pendulum_speed", chapter=3, number=2, level="warm-up",
@@ -98,14 +89,19 @@ $\hat\omega\, e^{\hat\omega\theta}$. Give a matrix expression in `W` and `theta`
         name="planar_ode", chapter=3, number=6, level="core",
         title="A linear ODE in the plane",
         statement=r"""
-Solve $\dot x = A x$ with $A = \begin{pmatrix} 0 & -a \\ a & 0 \end{pmatrix}$ and
-$x(0) = (x_0, 0)$ (the two-dimensional case of equation (121)). Give $x(t)$ as a 2-vector of
-expressions in `a`, `t`, `x_0`, and check that it satisfies both conditions.
+The solution of $\dot x = A x$ with $A = \begin{pmatrix} 0 & -a \\ a & 0 \end{pmatrix}$ and
+$x(0) = (x_0, 0)$ (the two-dimensional case of equation (121)) passes through the point
+$(0, 2)$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then find the
+smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
-        answer=Expr(shape=(2,), domain=(a, t, x_0)),
-        tip="Differentiate the first equation once more: ẍ₁ = −a² x₁.",
-        mistakes={"direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀."},
-        properties=_PLANAR_PROPERTIES,
+        answer=Value(shape=(2,)),
+        tip="Differentiate the first equation once more: ẍ₁ = −a² x₁; then impose the "
+            "condition at time t = 1 on your solution.",
+        mistakes={
+            "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
+                         "a > 0 the point turns counterclockwise.",
+            "larger": "that a works, but a smaller positive a does too.",
+        },
     ),
     Exercise(
         name="exp_general_axis", chapter=3, number=7, level="challenge",

@@ -7,11 +7,9 @@ CHAPTER = 4
 SETUP = ("import numpy as np\nimport sympy as sp\n"
          "from course_lib.exercises import check, alpha, beta")
 
-_R_GIVEN = r"""$R = \frac13\begin{pmatrix} 2 & -1 & 2 \\ 2 & 2 & -1 \\ -1 & 2 & 2
-\end{pmatrix}$"""
-_FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 1, 0)$, $y_{ab} = (-1, 0, 0)$,
-$z_{ab} = (0, 0, 1)$; frame $C$'s axes, written in $B$, are $x_{bc} = (1, 0, 0)$,
-$y_{bc} = (0, 0, 1)$, $z_{bc} = (0, -1, 0)$."""
+_FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 0, -1)$, $y_{ab} = (0, 1, 0)$,
+$z_{ab} = (1, 0, 0)$; frame $C$'s axes, written in $B$, are $x_{bc} = (0, 0, 1)$,
+$y_{bc} = (1, 0, 0)$, $z_{bc} = (0, 1, 0)$."""
 
 EXERCISES = [
     Exercise(
@@ -43,11 +41,13 @@ $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
         name="angle_from_trace", chapter=4, number=3, level="warm-up",
         title="The angle of a rotation from its trace",
         statement=r"""
-Check that """ + _R_GIVEN + r""" is a rotation and find its angle $\theta \in [0, \pi]$ from
+Of a rotation matrix $R$ only the diagonal entries are known: $R_{11} = 0.6$, $R_{22} = 0.1$,
+$R_{33} = -0.2$. Find its angle $\theta \in [0, \pi]$ from
 $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
 """,
         answer=Value(shape=(), angle=True),
-        tip="tr R = 1 + 2 cos θ, so cos θ = (tr R − 1)/2.",
+        tip="tr R = 1 + 2 cos θ, so cos θ = (tr R − 1)/2; the off-diagonal entries are not "
+            "needed.",
         mistakes={
             "cosine": "that is cos θ; the exercise asks for θ itself.",
             "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
@@ -57,12 +57,15 @@ $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
         name="axis_of_rotation", chapter=4, number=4, level="core",
         title="The axis of a rotation",
         statement=r"""
-For the same """ + _R_GIVEN + r""", find the unit axis $\omega$ with $R = e^{\hat\omega\theta}$
-and $\theta \in (0, \pi)$, from the skew part $R - R^T = 2\sin\theta\,\hat\omega$.
+Of a rotation $R = e^{\hat\omega\theta}$ with $\theta \in (0, \pi)$ we know only its trace,
+$\operatorname{tr} R = 0$, and its skew part
+$R - R^T = \frac{1}{\sqrt3}\begin{pmatrix} 0 & -2 & 1 \\ 2 & 0 & -2 \\ -1 & 2 & 0
+\end{pmatrix}$. Find the unit axis $\omega$ from $R - R^T = 2\sin\theta\,\hat\omega$.
 Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
-        tip="Read ω̂ off (R − Rᵀ)/(2 sin θ): ω = (entry (3,2), entry (1,3), entry (2,1)).",
+        tip="The trace gives θ (so sin θ); then read ω̂ off (R − Rᵀ)/(2 sin θ): "
+            "ω = (entry (3,2), entry (1,3), entry (2,1)).",
         mistakes={"unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its "
                                   "length)."},
     ),
@@ -71,7 +74,7 @@ Give a 3-vector.
         title="Fixed axes and body axes",
         statement=r"""
 A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
-axis, then by 90° about its **own** (current) $x$ axis, then by 90° about the **world** $x$
+axis, then by 90° about its **own** (current) $y$ axis, then by 90° about the **world** $x$
 axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
 """,
         answer=Value(shape=(3, 3), rotation=True),
@@ -79,7 +82,7 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
             "body's own axis from the right.",
         mistakes={
             "all_body": "the last turn is about the world x axis: it multiplies from the left.",
-            "all_world": "the second turn is about the camera's own x axis: it multiplies from "
+            "all_world": "the second turn is about the camera's own y axis: it multiplies from "
                          "the right.",
         },
     ),
@@ -100,37 +103,36 @@ different rotation, has the same angle.
     ),
     Exercise(
         name="small_angle", chapter=4, number=7, level="challenge",
-        title="The angle of a tiny rotation",
+        title="The logarithm of a rotation near I",
         statement=r"""
-A gyroscope reports the rotation over one time step (entries to 10 digits)
-
-```python
-R_small = np.array([[1.0, -6.66666668e-09, -3.33333331e-09],
-                    [6.66666666e-09, 1.0, -6.66666668e-09],
-                    [3.33333336e-09, 6.66666666e-09, 1.0]])
-```
-
-Find its angle $\theta$ **to within $10^{-9}$**. First try $\arccos((\operatorname{tr}R-1)/2)$
-and explain what goes wrong; then use the skew part $R - R^T = 2\sin\theta\,\hat\omega$ and
-`np.arctan2`. Give a number (radians).
+For small angles $\alpha, \beta$ the rotation $R = R_z(\beta)\,R_x(\alpha)$ is close to
+$I$, and its rotation vector $r = \omega\theta$ (with $e^{\hat r} = R$, as `so3.log` returns
+it) is a power series in $\alpha$ and $\beta$. Find $r$ up to and including the terms of
+second order: a 3-vector of polynomials of degree at most 2 in `alpha` and `beta`. (Expand
+both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
+\sin\theta\,\hat\omega$; why does $\sin\theta \approx \theta$ not spoil the second order?)
 """,
-        answer=Value(shape=(), angle=True),
-        tip="Near θ = 0, cos θ = 1 − θ²/2 is 1 to double precision; sin θ ≈ θ is not lost.",
-        mistakes={"arccos": "arccos of (tr R − 1)/2 loses every digit near θ = 0 (cos θ "
-                            "rounds to 1): use the size of the skew part R − Rᵀ."},
+        answer=Expr(shape=(3,), domain=(alpha, beta)),
+        tip="R_z(β) ≈ I + βẑ + β²ẑ²/2 and R_x(α) ≈ I + αx̂ + α²x̂²/2; the symmetric terms "
+            "drop out of the skew part, and the skew part of ẑx̂ is ½(ẑx̂ − x̂ẑ).",
+        mistakes={
+            "first_order": "that is the first-order part; the product βα ẑx̂ adds a "
+                           "second-order term (its skew part is ½[ẑ, x̂], the hat of ½ e_y).",
+            "sign": "check the order of the factors: R_z(β) is on the left, so the cross term "
+                    "is βα ẑx̂, not αβ x̂ẑ.",
+        },
     ),
     Exercise(
         name="half_turn_axis", chapter=4, number=8, level="challenge",
         title="The axis of a half turn",
         statement=r"""
-$R = \frac19\begin{pmatrix} -7 & -4 & 4 \\ -4 & -1 & -8 \\ 4 & -8 & -1 \end{pmatrix}$ is a
-half turn ($\theta = \pi$), so $R - R^T = 0$ and the formula of exercise 4.4 fails. Use
-$R = I + 2\hat\omega^2 = 2\omega\omega^T - I$ to find the unit axis $\omega$, with its first
-component positive. Give a 3-vector.
+A half turn $R$ ($\theta = \pi$) has the first row $\frac{1}{49}(23,\ -24,\ 36)$; the other
+rows are not given. Since $R - R^T = 0$ for a half turn, the skew part says nothing about the
+axis. Use $R = I + 2\hat\omega^2 = 2\omega\omega^T - I$ to find the unit axis $\omega$, with its
+first component positive. Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
-        tip="(R + I)/2 = ωωᵀ: its diagonal gives ωᵢ², its off-diagonal entries the signs of "
-            "ωᵢωⱼ.",
+        tip="(R + I)/2 = ωωᵀ: its first row is ω₁ ω; the entry (1,1) gives ω₁².",
         mistakes={
             "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by "
                           "ω₁ > 0.",

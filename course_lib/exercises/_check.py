@@ -233,11 +233,53 @@ def _value_hint(ex, fp, v):
     return _positions(~ok.reshape(spec.shape), spec.shape)
 
 
+def _single_precision(answer):
+    """Does a numeric answer hold numpy floats of less than double precision (float32 ...)?"""
+    items = answer if isinstance(answer, (list, tuple)) else [answer]
+    for item in items:
+        dtype = getattr(item, "dtype", None)
+        if dtype is not None and (dtype.kind, dtype.itemsize) in {("f", 2), ("f", 4), ("c", 8)}:
+            return True
+        if isinstance(item, (list, tuple)) and _single_precision(item):
+            return True
+    return False
+
+
+_MAX_REACH = 1024        # cells scanned each side: float32 rounding of entries up to about 4
+
+
+def _single_precision_matches(name, v, cells):
+    """Per entry: is it within float32 rounding (a few units of 2⁻²⁴, relative) of the right
+    cell? Scans the neighbouring cells of the digest grid."""
+    if len(np.ravel(v)) != len(cells):
+        return np.zeros(len(cells), dtype=bool)
+    ok = []
+    for i, (x, (off, dig)) in enumerate(zip(np.ravel(v), cells)):
+        reach = int(np.ceil(8 * np.finfo(np.float32).eps * max(1.0, abs(x)) / E.STEP))
+        if reach > _MAX_REACH:                       # a huge entry: not worth the scan
+            ok.append(False)
+            continue
+        centre = int(np.floor((x + off * E.STEP / 2) / E.STEP))
+        ok.append(any(E.digest(name, i, centre + k) == dig for k in range(-reach, reach + 1)))
+    return np.array(ok)
+
+
+_SINGLE = ("your answer is stored in single precision (float32), which keeps only about 7 "
+           "digits; the check needs double precision (within TOL): compute in float64 (drop "
+           "dtype=np.float32 or .astype(np.float32)).")
+
+
 def judge_value(ex, fp, answer):
     form, M = read_answer(answer, ex.answer.shape, set(), numeric=True)
     v = _numbers(M)
     if E.match_cells(ex.name, v, fp["cells"]).all():
         return "correct", "correct."
+    if _single_precision(answer):
+        ok = _single_precision_matches(ex.name, v, fp["cells"])
+        if ok.all():
+            return "wrong", "right to single precision, but " + _SINGLE
+        return "wrong", _positions(~ok.reshape(ex.answer.shape), ex.answer.shape) + " Also, " \
+            + _SINGLE
     return "wrong", _value_hint(ex, fp, v)
 
 

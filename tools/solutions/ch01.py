@@ -7,17 +7,28 @@ answer}; tools/exercise_fingerprints.py stores fingerprints of both, never the c
 
 SOLUTIONS = {
     "coords_by_projection": '''\
-s = 1 / np.sqrt(2)
-e1, e2, e3 = np.array([s, s, 0]), np.array([-s, s, 0]), np.array([0, 0, 1])
-p = np.array([1, 3, 2])
-answer_coords_by_projection = [p @ e1, p @ e2, p @ e3]     # projections, eqs (3)-(5)''',
+o, p = np.array([1, 1, 0]), np.array([3, 1, 2])
+directions = [np.array([1, 1, 0]), np.array([-1, 1, 0]), np.array([0, 0, 2])]
+e1, e2, e3 = [v / np.linalg.norm(v) for v in directions]       # unit vectors, eq. (1)
+answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]   # eqs (3)-(5)''',
     "angle_from_lengths": '''\
 # 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
 x_dot_y = sp.Rational(9 + 16 - 13, 2)
 answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))''',
     "which_are_rigid": '''\
-# (a) and (d) keep distances but flip g(e1) x g(e2); (c) doubles distances
-answer_which_are_rigid = {"b", "e", "f"}''',
+# g(p) = M p + d keeps distances iff M is orthogonal; it keeps cross products iff det M = +1
+half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])            # = diag(-1, -1, 1)
+quarter_x = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])
+n = np.array([1, 1, 0]) / np.sqrt(2)
+M = {
+    "a": np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1]]),           # swaps x and y
+    "b": 2 * np.outer(n, n) - np.eye(3),                        # half turn about n
+    "c": half_z @ (-np.eye(3)),                                 # = diag(1, 1, -1)
+    "d": np.diag([1, -1, 1]) @ np.diag([-1, 1, 1]),
+    "e": quarter_x,                                             # the translation drops out of g_*
+    "f": -np.eye(3),
+}
+answer_which_are_rigid = {k for k, Mk in M.items() if np.isclose(np.linalg.det(Mk), 1)}''',
     "unit_tangent": '''\
 p = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])
 velocity = p.diff(t)
@@ -41,9 +52,12 @@ answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])''',
 }
 
 MISTAKES = {
-    "coords_by_projection": {"weights": "np.array([[s, -s, 0], [s, s, 0], [0, 0, 1]]) @ p"},
+    "coords_by_projection": {"weights": "np.column_stack([e1, e2, e3]) @ (p - o)",
+                             "no_origin": "[p @ e1, p @ e2, p @ e3]",
+                             "unnormalized": "[(p - o) @ v for v in directions]"},
     "angle_from_lengths": {"cosine": "sp.Rational(1, 2)", "sign": "sp.acos(-sp.Rational(1, 2))"},
-    "which_are_rigid": {"mirrors": '{"a", "b", "d", "e", "f"}', "translation": '{"b", "e"}'},
+    "which_are_rigid": {"mirrors": '{"a", "b", "c", "d", "e", "f"}', "translation": '{"b", "d"}',
+                        "two_mirrors": '{"b", "e"}'},
     "unit_tangent": {"velocity": "velocity"},
     "lagrange_identity": {"plus": "xx * yy + xy**2"},
     "bac_cab": {"swapped": "[beta_, alpha_]"},

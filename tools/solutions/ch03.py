@@ -2,10 +2,11 @@
 
 SOLUTIONS = {
     "ode_shifted": '''\
-C = sp.Symbol("C")
-general = C * sp.exp(a * t)
-C_value = sp.solve(sp.Eq(general.subs(t, 1), x_0), C)[0]      # C = x₀ e^{−a}
-answer_ode_shifted = sp.simplify(general.subs(C, C_value))''',
+rate, x_start = sp.symbols("rate x_start", real=True)
+x_of = lambda time: sp.exp(rate * time) * x_start            # (106)
+rate_value = sp.solve(sp.Eq(x_of(3) / x_of(1), sp.Rational(12, 3)), rate)[0]  # e^{2a} = 4
+start_value = sp.solve(sp.Eq(x_of(1).subs(rate, rate_value), 3), x_start)[0]
+answer_ode_shifted = [rate_value, start_value]                # (ln 2, 3/2)''',
     "pendulum_speed": '''\
 tau = sp.Symbol("tau", real=True)
 angle = sp.pi / 6 * sp.cos(3 * tau)                 # θ(t)
@@ -27,7 +28,10 @@ answer_rodrigues_derivative = d_coeffs[1] * W + d_coeffs[2] * W**2''',
 x1, x2 = sp.Function("x1"), sp.Function("x2")
 system = [sp.Eq(x1(t).diff(t), -a * x2(t)), sp.Eq(x2(t).diff(t), a * x1(t))]
 sol = sp.dsolve(system, [x1(t), x2(t)], ics={x1(0): x_0, x2(0): 0})
-answer_planar_ode = [sp.simplify(s.rhs) for s in sol]''',
+path = [sp.simplify(s.rhs) for s in sol]                      # x₀(cos at, sin at)
+# x(1) = (0, 2): x₀ cos a = 0 and x₀ sin a = 2; the smallest a > 0 is π/2, with x₀ = 2
+assert [p.subs({a: sp.pi / 2, x_0: 2, t: 1}) for p in path] == [0, 2]
+answer_planar_ode = [sp.pi / 2, 2]''',
     "exp_general_axis": '''\
 n = sp.sqrt(omega.dot(omega))                        # ‖ω‖; ω̂ = ‖ω‖ n̂ with a unit n
 # Rodrigues for the unit axis n and the angle ‖ω‖θ, with n̂ = ω̂/‖ω‖:
@@ -44,12 +48,13 @@ answer_spatial_angular_velocity = [Omega[2, 1], Omega[0, 2], Omega[1, 0]]''',
 }
 
 MISTAKES = {
-    "ode_shifted": {"at_zero": "x_0 * sp.exp(a * t)"},
+    "ode_shifted": {"interval": "[sp.log(4) / 3, 3 * 4 ** sp.Rational(-1, 3)]",
+                    "at_zero": "[sp.log(2), 3]"},
     "pendulum_speed": {"angle": "2 * angle.subs(tau, sp.pi / 6)"},
     "hat_fifth": {"unit": "W"},
     "half_turn": {"mirror": "sp.Identity(3) - 2 * u * u.T",
                   "inner": "2 * omega.dot(omega) * sp.eye(3) - sp.eye(3)"},
-    "planar_ode": {"direction": "[x_0 * sp.cos(a * t), -x_0 * sp.sin(a * t)]"},
+    "planar_ode": {"direction": "[sp.pi / 2, -2]", "larger": "[3 * sp.pi / 2, -2]"},
     "exp_general_axis": {"unit": "sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2"},
     "spatial_angular_velocity": {
         "body": "[sp.cos(t), -sp.sin(t), 1]", "sum": "[1, 0, 1]"},

@@ -3,7 +3,7 @@
 1. The pages come from the student copies (``python -m course_lib.student``: solutions
    replaced by stubs), or with ``--solutions`` from ``notebooks/`` as they are (instructors).
 2. Each chapter is prepared: the setup cell is dropped (the site needs no set-up), a line of
-   launch links is put under the title, stub cells are tagged ``raises-exception`` and
+   launch links is put under the title, stub and check cells are tagged ``raises-exception`` and
    ``remove-output`` so that executing does not stop on them and shows no traceback.
 3. Each chapter is executed and cleaned by tools/notebooks.py (no stall after widget cells,
    palette PNGs); widget views are dropped (without a kernel a slider moves nothing; the
@@ -92,7 +92,9 @@ def prepare(nb, name, url):
     nb.cells = [c for c in nb.cells if c.get("id") != nbtool.SETUP_ID]
     nb.cells.insert(1, nbformat.v4.new_markdown_cell(launch_line(url, name)))
     for cell in nb.cells:
-        if cell.cell_type == "code" and STUB in cell.source:
+        # a stub raises, and so does the check cell after it (an nbgrader test cell)
+        graded = cell.metadata.get("nbgrader", {}).get("grade", False)
+        if cell.cell_type == "code" and (STUB in cell.source or graded):
             tags = cell.metadata.setdefault("tags", [])
             tags += [t for t in ("raises-exception", "remove-output") if t not in tags]
     return nb

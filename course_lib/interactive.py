@@ -48,9 +48,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from . import plotting, so3
-from ._arrays import as_angles, as_count, as_vectors
+from ._arrays import as_angles, as_count, as_direction, as_scalar, as_unit_axes, as_vector3
 from .rodrigues import (
-    _unit_axis,
     axis_from_spherical,
     rodrigues_terms,
     rodrigues_vectors,
@@ -167,12 +166,8 @@ def rodrigues_readout(axis, theta, decimals=2, tol=TOL):
     decimals = as_count(decimals, "decimals")
     if decimals > 6:
         raise ValueError(f"decimals must be between 0 and 6, got {decimals}")
-    w = _unit_axis(axis, tol)
-    if w.shape != (3,):
-        raise ValueError(f"axis must be a single 3-vector of shape (3,), got shape {w.shape}")
-    theta = as_angles(theta, "theta")
-    if theta.shape != ():
-        raise ValueError(f"theta must be a single angle, got shape {theta.shape}")
+    w = as_unit_axes(as_vector3(axis, "axis"), "axis", tol)
+    theta = _scalar_angle(theta, "theta")
     terms = rodrigues_terms(w, theta, tol)
     R = so3.exp(w, theta)
     th = _fmt(theta, decimals)
@@ -189,21 +184,21 @@ def rodrigues_readout(axis, theta, decimals=2, tol=TOL):
 # --------------------------------------------------------------------------------------------
 
 
-def _scalar_angle(x, name):
+def _single(x, name, what="angle (a number)"):
+    """A single finite real number; the message says what kind of number ``name`` is."""
     a = as_angles(x, name)
     if a.shape != ():
-        raise ValueError(f"{name} must be a single angle (a number), got shape {a.shape}")
+        raise ValueError(f"{name} must be a single {what}, got shape {a.shape}")
     return float(a)
+
+
+def _scalar_angle(x, name):
+    return _single(x, name)
 
 
 def _view_angle(x, name):
     """A camera angle in degrees: a single finite real number (any value, as ``view_init``)."""
-    a = as_angles(x, name)
-    if a.shape != ():
-        raise ValueError(
-            f"{name} must be a single viewing angle in degrees (a number), got shape {a.shape}"
-        )
-    return float(a)
+    return _single(x, name, "viewing angle in degrees (a number)")
 
 
 def _set_view(ax, elev, azim):
@@ -360,9 +355,7 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     polar = _scalar_angle(polar, "polar")
     azimuth = _scalar_angle(azimuth, "azimuth")
     theta = _scalar_angle(theta, "theta")
-    q0 = as_vectors(q0, "q0")
-    if q0.shape != (3,):
-        raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
+    q0 = as_vector3(q0, "q0")
     elev = _view_angle(elev, "elev")
     azim = _view_angle(azim, "azim")
     _set_view(ax, elev, azim)
@@ -684,9 +677,7 @@ def rodrigues_explorer(
     >>> np.allclose(w.result.sum(axis=0), so3.exp(axis, 1.0) @ Q0)
     True
     """
-    q0 = as_vectors(q0, "q0")
-    if q0.shape != (3,):
-        raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
+    q0 = as_vector3(q0, "q0")
 
     def draw(ax, polar, azimuth, theta, elev, azim):
         return draw_rodrigues_terms(ax, polar, azimuth, theta, q0, elev=elev, azim=azim)
@@ -786,13 +777,12 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
     dpi = as_count(dpi, "dpi", minimum=20)
     if dpi > 150:
         raise ValueError(f"dpi must be between 20 and 150, got {dpi}")
-    size = _scalar_angle(size, "size")
+    size = as_scalar(size, "size")
     if not 1.0 <= size <= 8.0:
         raise ValueError(f"size must be between 1 and 8 inches, got {size:g}")
     times = spin_times(frames, duration)
     rotations = spin_rotations(axis, times)
-    w = as_vectors(axis, "axis")
-    w = w / np.linalg.norm(w)
+    w = as_direction(axis, "axis")
 
     fig, ax = plotting.axes3d(r"Spinning at $\|\omega\| = 1$ rad/s", lim=1.1, figsize=(size, size))
     ax.set_axis_off()  # panes and ticks would change nothing but triple the stored size

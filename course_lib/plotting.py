@@ -53,8 +53,8 @@ from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from . import so3
-from ._arrays import as_count, as_float_array, require_finite
-from .tolerance import TOL
+from ._arrays import as_count, as_direction, as_float_array, as_vector3, require_finite
+from .tolerance import TOL, fmt_residual, tol_label
 
 __all__ = [
     "DPI",
@@ -190,6 +190,9 @@ def _array(x, name):
 
 
 def _vector(x, name, d):
+    """One finite d-vector: :func:`course_lib._arrays.as_vector3` on a 3D axes."""
+    if d == 3:
+        return as_vector3(x, name)
     a = _array(x, name)
     if a.shape != (d,):
         raise ValueError(
@@ -600,7 +603,7 @@ def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", col
         if n <= TOL:
             raise ValueError(
                 f"R column {i} ({names[i]} axis) has zero length: "
-                f"‖R e_{i + 1}‖ = {n:.1e} <= TOL = {TOL:g}"
+                f"‖R e_{i + 1}‖ = {fmt_residual(n, TOL)} ≤ {tol_label(TOL)}"
             )
     tips = o + s * R.T
     artists = []
@@ -950,7 +953,8 @@ def draw_plane(ax, a, b, origin=None, label=None, color="tab:gray", alpha=0.25, 
         area = float(abs(a[0] * b[1] - a[1] * b[0]))
     if area <= tol:
         raise ValueError(
-            f"a and b are parallel and span no plane: ‖a × b‖ = {area:.1e} <= TOL = {tol:g}"
+            f"a and b are parallel and span no plane: ‖a × b‖ = {fmt_residual(area, tol)} "
+            f"≤ {tol_label(tol)}"
         )
     corners = np.stack([o, o + a, o + a + b, o + b])
     if d == 3:
@@ -1041,16 +1045,12 @@ def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black
     if d == 3:
         if axis is None:
             raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
-        w = _vector(axis, "axis", 3)
-        norm = float(np.linalg.norm(w))
-        if norm <= tol:
-            raise ValueError(f"axis must be non-zero: ‖axis‖ = {norm:.1e} <= TOL = {tol:g}")
-        k = w / norm
+        k = as_direction(axis, "axis", tol)
         radius = float(np.linalg.norm(s - (k @ s) * k))
         if radius <= tol:
             raise ValueError(
                 f"start lies on the axis, so the arc is a single point: "
-                f"distance from the axis = {radius:.1e} <= TOL = {tol:g}"
+                f"distance from the axis = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
             )
         pts = c + _rotate_about(k, thetas, s)
     else:
@@ -1059,7 +1059,9 @@ def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black
         k = None
         radius = float(np.linalg.norm(s))
         if radius <= tol:
-            raise ValueError(f"start must be non-zero: ‖start‖ = {radius:.1e} <= TOL = {tol:g}")
+            raise ValueError(
+                f"start must be non-zero: ‖start‖ = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
+            )
         cos, sin = np.cos(thetas), np.sin(thetas)
         pts = c + np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
     artists = [_line(ax, pts, color, ls)]
@@ -1340,7 +1342,7 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     if logx:
         ax.set_xscale("log")
     if show_tol:
-        ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=f"TOL = {TOL:g}")
+        ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=tol_label(TOL))
     ax.set_xlabel(_text_arg(xlabel, "xlabel"), fontsize=FONT_SIZE)
     ax.set_ylabel(_text_arg(ylabel, "ylabel"), fontsize=FONT_SIZE)
     ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
@@ -1362,9 +1364,7 @@ _PANEL_KEYS = ("title", "frames", "vectors", "boxes", "axis")
 
 def _axis_line(ax, direction, label=None, origin=None, color="0.45"):
     """A dashed line through ``origin`` along ±``direction`` (length 1.2), labelled at its tip."""
-    k = _unit(_vector(direction, "axis direction", 3))
-    if np.linalg.norm(k) == 0.0:
-        raise ValueError("axis direction must be non-zero, got the zero vector")
+    k = as_direction(direction, "direction")
     o = _origin(origin, 3)
     artists = [_line(ax, [o - 1.2 * k, o + 1.2 * k], color, "--", 1.2)]
     if label is not None:
@@ -1680,8 +1680,10 @@ def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in sp
     q_par = (w @ q) * w
     q_perp = q - q_par
     if np.linalg.norm(q_perp) <= TOL:
-        raise ValueError(f"q lies on the axis (‖q_perp‖ = {np.linalg.norm(q_perp):.1e} <= "
-                         f"TOL = {TOL:g}): it does not move, there is no circle to draw")
+        raise ValueError(
+            f"q lies on the axis (‖q_perp‖ = {fmt_residual(np.linalg.norm(q_perp), TOL)} ≤ "
+            f"{tol_label(TOL)}): it does not move, there is no circle to draw"
+        )
     w_x_q = np.cross(w, q)
     fig, ax = axes3d(title, lim=lim, elev=elev, azim=azim)
     _axis_line(ax, w, label=r"$\omega$")

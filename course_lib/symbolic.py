@@ -38,7 +38,7 @@ from math import factorial
 import numpy as np
 import sympy as sp
 
-from .tolerance import TOL
+from .tolerance import TOL, fmt_residual, tol_label
 
 __all__ = [
     "omega",
@@ -1040,7 +1040,7 @@ def constraint_jacobian_rank(point=None, tol=TOL):
     residual = float(np.linalg.norm(Pn.T @ Pn - np.eye(3)))
     if not residual <= tol:
         raise ValueError(
-            f"point is not orthogonal: ‖RᵀR − I‖ = {residual:.1e} > TOL = {tol:.0e}; "
+            f"point is not orthogonal: ‖RᵀR − I‖ = {fmt_residual(residual, tol)} > {tol_label(tol)}; "
             "the rank is only meaningful on SO(3)"
         )
     R = rotation_symbols()

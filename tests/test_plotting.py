@@ -358,7 +358,7 @@ def test_draw_frame_in_2d():
         ({"R": np.eye(2)}, ValueError, r"3x3 matrix .* got shape \(2, 2\)"),
         ({"R": [[1, 0, 0], [0, np.nan, 0], [0, 0, 1]]}, ValueError, "NaN"),
         ({"R": [[1, 0, 0], [0, 0, 0], [0, 0, 1]]}, ValueError, "column 1 .*zero length.*TOL"),
-        ({"origin": [0, 0]}, ValueError, r"origin must be a 3-vector"),
+        ({"origin": [0, 0]}, ValueError, r"origin must be one 3-vector of shape \(3,\), got shape \(2,\)"),
         ({"scale": 0}, ValueError, "scale must be > 0"),
         ({"style": "wavy"}, ValueError, "style must be one of"),
         ({"R": "eye"}, TypeError, "R must be an array of real numbers"),
@@ -401,7 +401,7 @@ def test_draw_vector_is_free_same_arrow_from_different_points():
 
 def test_draw_vector_refuses_a_2d_vector_on_3d_axes():
     _, ax = axes3d("t")
-    msg = r"v must be a 3-vector of shape \(3,\) on a 3D axes, got shape \(2,\)"
+    msg = r"v must be one 3-vector of shape \(3,\), got shape \(2,\)"
     with pytest.raises(ValueError, match=msg):
         draw_vector(ax, [1, 0])
     with pytest.raises(ValueError, match="NaN"):
@@ -582,7 +582,7 @@ def test_draw_plane_spans_a_and_b_and_its_normal_is_a_cross_b(ax3, a, b, origin)
 
 def test_draw_plane_refuses_parallel_vectors_with_the_size_of_the_failure():
     _, ax = axes3d("t")
-    msg = r"a and b are parallel .*‖a × b‖ = 0.0e\+00 <= TOL = 1e-09"
+    msg = r"a and b are parallel .*‖a × b‖ = 0\.0e\+00 ≤ TOL = 1e-09"
     with pytest.raises(ValueError, match=msg):
         draw_plane(ax, [1, 2, 3], [2, 4, 6])
     _, ax2 = axes2d("t")
@@ -649,12 +649,12 @@ def test_draw_arc_of_zero_angle_is_a_point_without_arrow_head():
 @pytest.mark.parametrize(
     ("axis", "start", "kwargs", "error", "match"),
     [
-        ([0, 0, 0], [1, 0, 0], {}, ValueError, r"axis must be non-zero: ‖axis‖ = 0.0e\+00"),
+        ([0, 0, 0], [1, 0, 0], {}, ValueError, r"axis must be non-zero to define a direction: ‖axis‖ = 0\.0e\+00 ≤ TOL"),
         ([0, 0, 2], [0, 0, 1], {}, ValueError, "start lies on the axis"),
         ([0, 0, 1], [1, 0, 0], {"n": 1}, ValueError, "must be >= 2"),
         ([0, 0, 1], [1, 0, 0], {"n": 2.5}, TypeError, "must be an integer"),
         (None, [1, 0, 0], {}, TypeError, "needs an axis"),
-        ([0, 0, 1], [1, 0], {}, ValueError, "start must be a 3-vector"),
+        ([0, 0, 1], [1, 0], {}, ValueError, "start must be one 3-vector"),
     ],
 )
 def test_draw_arc_refuses_degenerate_input(axis, start, kwargs, error, match):

@@ -201,9 +201,26 @@ def _view_angle(x, name):
     return _single(x, name, "viewing angle in degrees (a number)")
 
 
-def _set_view(ax, elev, azim):
-    """Point the camera of a 3D axes; only the view changes, not what is drawn."""
-    ax.view_init(elev=elev, azim=azim)
+def _rotation_view(ax, func, polar, azimuth, theta, elev, azim):
+    """Check the angles, point the camera; the axis, the angle and the rotation to draw.
+
+    Only the view changes with ``(elev, azim)``, not what is drawn.
+    """
+    plotting._require_3d(ax, func)
+    polar = _scalar_angle(polar, "polar")
+    azimuth = _scalar_angle(azimuth, "azimuth")
+    theta = _scalar_angle(theta, "theta")
+    ax.view_init(elev=_view_angle(elev, "elev"), azim=_view_angle(azim, "azim"))
+    w = axis_from_spherical(polar, azimuth)
+    return w, theta, so3.exp(w, theta)
+
+
+def _moving_axes(w):
+    """The world axes e_i (with their colours) that a rotation about the unit axis w moves."""
+    for i, color in enumerate(plotting.FRAME_COLORS):
+        e = np.eye(3)[i]
+        if np.linalg.norm(e - (w @ e) * w) > TOL:
+            yield e, color
 
 
 def _draw_axis_line(ax, w, length=1.4):
@@ -268,26 +285,17 @@ def draw_rotated_frame(ax, polar, azimuth, theta, *, elev=VIEW_ELEV, azim=VIEW_A
     True
     >>> plt.close("all")
     """
-    plotting._require_3d(ax, "draw_rotated_frame")
-    polar = _scalar_angle(polar, "polar")
-    azimuth = _scalar_angle(azimuth, "azimuth")
-    theta = _scalar_angle(theta, "theta")
-    elev = _view_angle(elev, "elev")
-    azim = _view_angle(azim, "azim")
-    _set_view(ax, elev, azim)
-    w = axis_from_spherical(polar, azimuth)
-    R = so3.exp(w, theta)
+    w, theta, R = _rotation_view(ax, "draw_rotated_frame", polar, azimuth, theta, elev, azim)
     artists = []
     # World frame A: axis labels x_A, y_A, z_A but no name at the origin, where B's name goes.
     artists.extend(plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES))
     artists.extend(_draw_axis_line(ax, w))
     arcs = []
-    for i, color in enumerate(plotting.FRAME_COLORS):
-        e = np.eye(3)[i]
-        if np.linalg.norm(e - (w @ e) * w) > TOL and theta != 0.0:
-            arc = plotting.draw_arc(ax, w, e, theta, color=color, style="dotted", arrow=False)
-            artists.extend(arc)
-            arcs.append(arc.points)
+    moving = list(_moving_axes(w)) if theta != 0.0 else []  # a zero angle moves nothing
+    for e, color in moving:
+        arc = plotting.draw_arc(ax, w, e, theta, color=color, style="dotted", arrow=False)
+        artists.extend(arc)
+        arcs.append(arc.points)
     body = plotting.draw_frame(ax, R, label="B")
     artists.extend(body)
     return plotting.Drawn(
@@ -351,16 +359,8 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     (35.0, -30.0)
     >>> plt.close(fig)
     """
-    plotting._require_3d(ax, "draw_rodrigues_terms")
-    polar = _scalar_angle(polar, "polar")
-    azimuth = _scalar_angle(azimuth, "azimuth")
-    theta = _scalar_angle(theta, "theta")
     q0 = as_vector3(q0, "q0")
-    elev = _view_angle(elev, "elev")
-    azim = _view_angle(azim, "azim")
-    _set_view(ax, elev, azim)
-    w = axis_from_spherical(polar, azimuth)
-    R = so3.exp(w, theta)
+    w, theta, R = _rotation_view(ax, "draw_rodrigues_terms", polar, azimuth, theta, elev, azim)
     q = R @ q0
     terms = np.stack(rodrigues_vectors(w, theta, q0))
     chain = np.concatenate([np.zeros((1, 3)), np.cumsum(terms, axis=0)])
@@ -789,10 +789,8 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
     fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.92)
     plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES)
     _draw_axis_line(ax, w)
-    for i, color in enumerate(plotting.FRAME_COLORS):
-        e = np.eye(3)[i]
-        if np.linalg.norm(e - (w @ e) * w) > TOL:
-            plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
+    for e, color in _moving_axes(w):
+        plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
     clock = ax.text2D(0.5, 0.02, "", transform=ax.transAxes, ha="center")
     body = []
 

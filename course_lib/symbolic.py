@@ -1040,7 +1040,8 @@ def constraint_jacobian_rank(point=None, tol=TOL):
     residual = float(np.linalg.norm(Pn.T @ Pn - np.eye(3)))
     if not residual <= tol:
         raise ValueError(
-            f"point is not orthogonal: ‖RᵀR − I‖ = {fmt_residual(residual, tol)} > {tol_label(tol)}; "
+            f"point is not orthogonal: ‖RᵀR − I‖ = {fmt_residual(residual, tol)} > "
+            f"{tol_label(tol)}; "
             "the rank is only meaningful on SO(3)"
         )
     R = rotation_symbols()

@@ -46,8 +46,8 @@ Conventions
 
 from __future__ import annotations
 
-import numpy as np
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.patches import FancyArrowPatch, Polygon
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
@@ -343,8 +343,9 @@ def _setup2d(ax, title, lim, labels):
     ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
 
 
-def axes3d(title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$", "$z$"),
-           figsize=FIGSIZE):
+def axes3d(
+    title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$", "$z$"), figsize=FIGSIZE
+):
     r"""Create (or set up) a 3D axes: equal-aspect cube, labelled x/y/z axes and a title.
 
     The cube is :math:`[-\mathrm{lim}, \mathrm{lim}]^3` (or :math:`[lo, hi]^3`), so lengths and
@@ -513,8 +514,7 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
     else:
         fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI, layout=_LAYOUT_2D)
     axes = [
-        fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None)
-        for i in range(n)
+        fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None) for i in range(n)
     ]
     for ax, title in zip(axes, titles):
         if kind == "3d":
@@ -529,8 +529,16 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
 # --------------------------------------------------------------------------------------------
 
 
-def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", colors=FRAME_COLORS,
-               axis_names=("x", "y", "z")):
+def draw_frame(
+    ax,
+    R=None,
+    origin=None,
+    label="A",
+    scale=1.0,
+    style="solid",
+    colors=FRAME_COLORS,
+    axis_names=("x", "y", "z"),
+):
     r"""Draw a reference frame: the columns of ``R`` as arrows from ``origin``.
 
     The columns of :math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26) are the axes of frame B
@@ -593,8 +601,7 @@ def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", col
     names = list(axis_names)
     if len(colors) != d or len(names) != d:
         raise ValueError(
-            f"colors and axis_names must hold {d} entries each, "
-            f"got {len(colors)} and {len(names)}"
+            f"colors and axis_names must hold {d} entries each, got {len(colors)} and {len(names)}"
         )
     if label is not None:
         _text_arg(label, "label")
@@ -759,8 +766,7 @@ def _beside(ax, d, direction):
     return n2[0] * right + n2[1] * up, ha, va
 
 
-def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2,
-                 label_at=0.65):
+def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2, label_at=0.65):
     r"""Draw the segment from ``p`` to ``q``, e.g. the distance :math:`\|p_1 - p_2\|` of eq. (9).
 
     The label is written beside the point at the fraction :math:`t` = ``label_at`` of the way
@@ -835,8 +841,13 @@ def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=
         n, ha, va = _beside(ax, d, _unit(q - p))
         pos = p + t * (q - p) + _offset(ax) * n
         artists.append(_text(ax, pos, text, color=color, ha=ha, va=va))
-    return Drawn("segment", artists, np.stack([p, q]), length=float(np.linalg.norm(p - q)),
-                 label_position=pos)
+    return Drawn(
+        "segment",
+        artists,
+        np.stack([p, q]),
+        length=float(np.linalg.norm(p - q)),
+        label_position=pos,
+    )
 
 
 def draw_curve(ax, points, label=None, color="black", style="solid", arrow=False, linewidth=1.8):
@@ -974,8 +985,19 @@ def _rotate_about(k, thetas, v):
     return so3.exp(thetas[:, None] * k) @ v
 
 
-def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black", style="solid",
-             arrow=True, tol=TOL):
+def draw_arc(
+    ax,
+    axis,
+    start,
+    angle,
+    center=None,
+    n=60,
+    label=None,
+    color="black",
+    style="solid",
+    arrow=True,
+    tol=TOL,
+):
     r"""Draw the arc swept by the vector ``start`` rotating about ``axis`` by ``angle``.
 
     The arc is the set of points
@@ -1081,8 +1103,18 @@ def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black
 _BOX_FACES = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
 
 
-def draw_box(ax, R=None, center=None, size=(0.5, 1.0, 0.1), marks=None, mark_labels=None,
-             frame=None, color="tab:blue", alpha=0.25, tol=TOL):
+def draw_box(
+    ax,
+    R=None,
+    center=None,
+    size=(0.5, 1.0, 0.1),
+    marks=None,
+    mark_labels=None,
+    frame=None,
+    color="tab:blue",
+    alpha=0.25,
+    tol=TOL,
+):
     r"""Draw a rigid box (e.g. the phone of eq. 9) with orientation ``R`` about ``center``.
 
     A point with body coordinates :math:`m` (relative to the box centre) is drawn at the world
@@ -1166,8 +1198,11 @@ def draw_box(ax, R=None, center=None, size=(0.5, 1.0, 0.1), marks=None, mark_lab
         world = c + M @ R.T
         artists.extend(draw_point(ax, world, label=mark_labels, color="black").artists)
     if frame is not None:
-        artists.extend(draw_frame(ax, R, origin=c, label=_text_arg(frame, "frame"),
-                                  scale=0.6 * float(size.max())).artists)
+        artists.extend(
+            draw_frame(
+                ax, R, origin=c, label=_text_arg(frame, "frame"), scale=0.6 * float(size.max())
+            ).artists
+        )
     return Drawn("box", artists, world, corners=corners)
 
 
@@ -1242,9 +1277,18 @@ def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
     return Drawn("pendulum", artists, np.stack([c, bob]), velocity=v)
 
 
-def plot_convergence(terms, errors, title="Convergence of the series", ax=None, label=None,
-                     show_tol=True, xlabel="number of terms $N$",
-                     ylabel=r"error $\|\cdot\|_F$ (log scale)", references=None, logx=False):
+def plot_convergence(
+    terms,
+    errors,
+    title="Convergence of the series",
+    ax=None,
+    label=None,
+    show_tol=True,
+    xlabel="number of terms $N$",
+    ylabel=r"error $\|\cdot\|_F$ (log scale)",
+    references=None,
+    logx=False,
+):
     r"""Semilog plot of an approximation error against the number of series terms.
 
     Made for the truncated series of the matrix exponential (eq. 124, 126),
@@ -1331,8 +1375,10 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     for name, ref in (references or {}).items():
         y = _array(ref, f"references[{name!r}]")
         if y.shape != x.shape or not (y > 0).all():
-            raise ValueError(f"references[{name!r}] must be positive with the shape of terms "
-                             f"{x.shape}, got shape {y.shape}")
+            raise ValueError(
+                f"references[{name!r}] must be positive with the shape of terms "
+                f"{x.shape}, got shape {y.shape}"
+            )
         refs[name] = y
     for name, y in ys.items():
         ax.plot(x, y, marker="o", markersize=4, linewidth=1.8, label=name)
@@ -1368,8 +1414,9 @@ def _axis_line(ax, direction, label=None, origin=None, color="0.45"):
     o = _origin(origin, 3)
     artists = [_line(ax, [o - 1.2 * k, o + 1.2 * k], color, "--", 1.2)]
     if label is not None:
-        artists.append(_text(ax, o + (1.2 + _offset(ax)) * k, _text_arg(label, "label"),
-                             color=color))
+        artists.append(
+            _text(ax, o + (1.2 + _offset(ax)) * k, _text_arg(label, "label"), color=color)
+        )
     return Drawn("axis", artists, np.stack([o - 1.2 * k, o + 1.2 * k]))
 
 
@@ -1402,8 +1449,9 @@ def _panel_items(panel, key):
         items = [items]
     for item in items:
         if not isinstance(item, dict):
-            raise TypeError(f"panel[{key!r}] must hold dicts of keyword arguments, "
-                            f"got {type(item).__name__}")
+            raise TypeError(
+                f"panel[{key!r}] must hold dicts of keyword arguments, got {type(item).__name__}"
+            )
     return items
 
 
@@ -1474,8 +1522,9 @@ def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
             raise TypeError(f"panels[{i}] must be a dict, got {type(panel).__name__}")
         unknown = sorted(set(panel) - set(_PANEL_KEYS))
         if unknown:
-            raise ValueError(f"panels[{i}] has unknown keys {unknown}; "
-                             f"allowed are {list(_PANEL_KEYS)}")
+            raise ValueError(
+                f"panels[{i}] has unknown keys {unknown}; allowed are {list(_PANEL_KEYS)}"
+            )
         if "title" not in panel:
             raise TypeError(f"panels[{i}] needs a 'title' (str)")
     fig, axes = axes_row([p["title"] for p in panels], lim=lim, elev=elev, azim=azim)
@@ -1490,8 +1539,9 @@ def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
     return fig, axes, drawn
 
 
-def plot_error_curves(x, curves, title, xlabel, ylabel="error (log scale)", floor=1e-17,
-                      show_tol=True, reverse_x=True):
+def plot_error_curves(
+    x, curves, title, xlabel, ylabel="error (log scale)", floor=1e-17, show_tol=True, reverse_x=True
+):
     r"""Log-log plot of errors against a small parameter, e.g. :math:`\pi - \theta`.
 
     Drawn with :func:`plot_convergence` on a logarithmic x axis. Errors below ``floor``
@@ -1548,16 +1598,25 @@ def plot_error_curves(x, curves, title, xlabel, ylabel="error (log scale)", floo
         if (y < 0).any():
             raise ValueError(f"curves[{name!r}] must be >= 0 (errors), got min {y.min():.3g}")
         clipped[name] = np.maximum(y, low)
-    fig, ax = plot_convergence(xs, clipped, title=title, show_tol=show_tol, xlabel=xlabel,
-                               ylabel=ylabel)
+    fig, ax = plot_convergence(
+        xs, clipped, title=title, show_tol=show_tol, xlabel=xlabel, ylabel=ylabel
+    )
     ax.set_xscale("log")
     if reverse_x:
         ax.invert_xaxis()
     return fig, ax
 
 
-def plot_geodesic(R0, R1, steps=4, samples=61, title="Interpolating along the geodesic",
-                  lim=1.2, elev=22.0, azim=-50.0):
+def plot_geodesic(
+    R0,
+    R1,
+    steps=4,
+    samples=61,
+    title="Interpolating along the geodesic",
+    lim=1.2,
+    elev=22.0,
+    azim=-50.0,
+):
     r"""Frames along the geodesic from ``R0`` to ``R1`` and the paths of their axis tips.
 
     The geodesic is
@@ -1621,8 +1680,9 @@ def plot_geodesic(R0, R1, steps=4, samples=61, title="Interpolating along the ge
     return fig, ax, path
 
 
-def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in space",
-                          lim=1.2, elev=30.0, azim=-40.0):
+def plot_rodrigues_circle(
+    omega, q, theta, title="Rodrigues' formula, seen in space", lim=1.2, elev=30.0, azim=-40.0
+):
     r"""The geometry of Rodrigues' formula: a point turning on a circle about the axis.
 
     With a unit axis :math:`\omega`, the point :math:`q` splits into a part along the axis and a
@@ -1695,12 +1755,12 @@ def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in sp
     _text(ax, q_par - 0.5 * _offset(ax) * (right + up), r"$q_\parallel$", ha="right", va="top")
     draw_vector(ax, q_perp, origin=q_par, color="tab:blue")
     n, ha, va = _beside(ax, 3, q_perp)  # q_perp ends where q ends: label it at its middle
-    _text(ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue",
-          ha=ha, va=va)
+    _text(
+        ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue", ha=ha, va=va
+    )
     draw_vector(ax, w_x_q, origin=q_par, label=r"$\omega\times q$", color="tab:green")
     cos_part = np.cos(th) * q_perp
     draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")
-    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green",
-                style="dashed")
+    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green", style="dashed")
     draw_vector(ax, Rq, color="tab:red", label=r"$e^{\hat\omega\theta}q$")
     return fig, ax, {"q_par": q_par, "q_perp": q_perp, "w_x_q": w_x_q, "Rq": Rq}

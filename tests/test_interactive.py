@@ -233,7 +233,9 @@ def test_draw_rodrigues_terms_with_q0_on_the_axis_draws_no_circle():
 
 def test_draw_rodrigues_terms_refuses_bad_q0():
     fig, ax = plotting.axes3d("t")
-    with pytest.raises(ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"):
+    with pytest.raises(
+        ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"
+    ):
         draw_rodrigues_terms(ax, 0.1, 0.2, 0.3, q0=np.zeros((2, 3)))
     with pytest.raises(ValueError, match="q0 contains NaN"):
         draw_rodrigues_terms(ax, 0.1, 0.2, 0.3, q0=(np.nan, 0, 0))
@@ -633,7 +635,9 @@ def test_explorer_refuses_initial_values_outside_the_sliders(make):
 
 
 def test_rodrigues_explorer_refuses_bad_q0():
-    with pytest.raises(ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"):
+    with pytest.raises(
+        ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"
+    ):
         rodrigues_explorer(q0=np.zeros((2, 3)))
     with pytest.raises(ValueError, match=r"q0 must be one 3-vector .* got shape \(4,\)"):
         rodrigues_explorer(q0=[1.0, 2.0, 3.0, 4.0])

@@ -303,6 +303,24 @@ def draw_rotated_frame(ax, polar, azimuth, theta, *, elev=VIEW_ELEV, azim=VIEW_A
     )
 
 
+def _draw_orbit(ax, w, q0):
+    """The dotted circle that q0 travels about the unit axis w, or None if q0 is on the axis."""
+    center = (w @ q0) * w
+    if np.linalg.norm(q0 - center) <= TOL:
+        return None
+    return plotting.draw_arc(
+        ax,
+        w,
+        q0 - center,
+        2.0 * np.pi,
+        center=center,
+        n=90,
+        color="0.6",
+        style="dotted",
+        arrow=False,
+    )
+
+
 def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, azim=VIEW_AZIM):
     r"""Draw Rodrigues' formula assembling :math:`e^{\hat\omega\theta} q_0` tip to tail.
 
@@ -366,22 +384,10 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     chain = np.concatenate([np.zeros((1, 3)), np.cumsum(terms, axis=0)])
     artists = []
     artists.extend(_draw_axis_line(ax, w))
-    center = (w @ q0) * w
-    circle = None
-    if np.linalg.norm(q0 - center) > TOL:
-        arc = plotting.draw_arc(
-            ax,
-            w,
-            q0 - center,
-            2.0 * np.pi,
-            center=center,
-            n=90,
-            color="0.6",
-            style="dotted",
-            arrow=False,
-        )
-        artists.extend(arc)
-        circle = arc.points
+    circle = _draw_orbit(ax, w, q0)
+    if circle is not None:
+        artists.extend(circle)
+        circle = circle.points
     for k in range(3):
         artists.extend(plotting.draw_vector(ax, terms[k], origin=chain[k], color=_TERM_COLORS[k]))
     artists.extend(plotting.draw_vector(ax, q, color=_RESULT_COLOR, linewidth=2.6))
@@ -782,16 +788,7 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
         raise ValueError(f"size must be between 1 and 8 inches, got {size:g}")
     times = spin_times(frames, duration)
     rotations = spin_rotations(axis, times)
-    w = as_direction(axis, "axis")
-
-    fig, ax = plotting.axes3d(r"Spinning at $\|\omega\| = 1$ rad/s", lim=1.1, figsize=(size, size))
-    ax.set_axis_off()  # panes and ticks would change nothing but triple the stored size
-    fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.92)
-    plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES)
-    _draw_axis_line(ax, w)
-    for e, color in _moving_axes(w):
-        plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
-    clock = ax.text2D(0.5, 0.02, "", transform=ax.transAxes, ha="center")
+    fig, ax, clock = _spin_scene(as_direction(axis, "axis"), size)
     body = []
 
     def update(k):
@@ -804,12 +801,29 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
 
     interval_ms = 1000.0 * float(times[1] - times[0])
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=interval_ms, blit=False)
-    writer = _PaletteHTMLWriter(fps=1000.0 / interval_ms, embed_frames=True, default_mode="loop")
     try:
-        with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp, "spin.html")
-            anim.save(str(path), writer=writer, dpi=dpi)
-            html = path.read_text()
+        return HTML(_html_player(anim, 1000.0 / interval_ms, dpi))
     finally:
         plt.close(fig)
-    return HTML(html)
+
+
+def _spin_scene(w, size):
+    """What stays still in the spin animation: world frame, axis, circles; and the clock text."""
+    fig, ax = plotting.axes3d(r"Spinning at $\|\omega\| = 1$ rad/s", lim=1.1, figsize=(size, size))
+    ax.set_axis_off()  # panes and ticks would change nothing but triple the stored size
+    fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.92)
+    plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES)
+    _draw_axis_line(ax, w)
+    for e, color in _moving_axes(w):
+        plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
+    clock = ax.text2D(0.5, 0.02, "", transform=ax.transAxes, ha="center")
+    return fig, ax, clock
+
+
+def _html_player(anim, fps, dpi):
+    """The HTML text of matplotlib's JavaScript player for ``anim``, palette PNG frames inside."""
+    writer = _PaletteHTMLWriter(fps=fps, embed_frames=True, default_mode="loop")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp, "spin.html")
+        anim.save(str(path), writer=writer, dpi=dpi)
+        return path.read_text()

@@ -1064,28 +1064,9 @@ def draw_arc(
     n = as_count(n, "n (number of points on the arc)", minimum=2)
     ls = _linestyle(style)
     thetas = np.linspace(0.0, theta, n)
-    if d == 3:
-        if axis is None:
-            raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
-        k = as_direction(axis, "axis", tol)
-        radius = float(np.linalg.norm(s - (k @ s) * k))
-        if radius <= tol:
-            raise ValueError(
-                f"start lies on the axis, so the arc is a single point: "
-                f"distance from the axis = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
-            )
-        pts = c + _rotate_about(k, thetas, s)
-    else:
-        if axis is not None:
-            raise TypeError("draw_arc on a 2D axes rotates in the plane: pass axis=None")
-        k = None
-        radius = float(np.linalg.norm(s))
-        if radius <= tol:
-            raise ValueError(
-                f"start must be non-zero: ‖start‖ = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
-            )
-        cos, sin = np.cos(thetas), np.sin(thetas)
-        pts = c + np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
+    arc_points = _arc_points_3d if d == 3 else _arc_points_2d
+    k, radius, pts = arc_points(axis, s, thetas, tol)
+    pts = c + pts
     artists = [_line(ax, pts, color, ls)]
     if arrow and theta != 0.0:
         artists.append(_arrow(ax, pts[-2], pts[-1], color))
@@ -1098,6 +1079,33 @@ def draw_arc(
         pos = mid + _offset(ax) * _unit(out)
         artists.append(_text(ax, pos, _text_arg(label, "label"), color=color))
     return Drawn("arc", artists, pts, axis=k, radius=radius)
+
+
+def _arc_points_3d(axis, s, thetas, tol):
+    """The unit axis k, the radius and the points e^(k̂θ) s of an arc about the origin."""
+    if axis is None:
+        raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
+    k = as_direction(axis, "axis", tol)
+    radius = float(np.linalg.norm(s - (k @ s) * k))
+    if radius <= tol:
+        raise ValueError(
+            f"start lies on the axis, so the arc is a single point: "
+            f"distance from the axis = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
+        )
+    return k, radius, _rotate_about(k, thetas, s)
+
+
+def _arc_points_2d(axis, s, thetas, tol):
+    """No axis (the plane's normal), the radius and the points of s turned by each θ."""
+    if axis is not None:
+        raise TypeError("draw_arc on a 2D axes rotates in the plane: pass axis=None")
+    radius = float(np.linalg.norm(s))
+    if radius <= tol:
+        raise ValueError(
+            f"start must be non-zero: ‖start‖ = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
+        )
+    cos, sin = np.cos(thetas), np.sin(thetas)
+    return None, radius, np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
 
 
 _BOX_FACES = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
@@ -1277,6 +1285,35 @@ def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
     return Drawn("pendulum", artists, np.stack([c, bob]), velocity=v)
 
 
+def _error_series(series, shape):
+    """The error curves by name, each of ``shape``, >= 0; zeros become gaps (NaN) on a log scale."""
+    ys = {}
+    for name, err in series.items():
+        y = _array(err, "errors" if name is None else f"errors[{name!r}]")
+        if y.shape != shape:
+            raise ValueError(f"errors must have the shape of terms {shape}, got {y.shape}")
+        if (y < 0).any():
+            raise ValueError(f"errors must be >= 0 (they are norms), got min {y.min():.3g}")
+        if not (y > 0).any():
+            raise ValueError("no error is positive: nothing to show on a log scale")
+        ys[name] = np.where(y > 0, y, np.nan)
+    return ys
+
+
+def _reference_curves(references, shape):
+    """The reference curves by name, each positive and of ``shape``."""
+    refs = {}
+    for name, ref in references.items():
+        y = _array(ref, f"references[{name!r}]")
+        if y.shape != shape or not (y > 0).all():
+            raise ValueError(
+                f"references[{name!r}] must be positive with the shape of terms "
+                f"{shape}, got shape {y.shape}"
+            )
+        refs[name] = y
+    return refs
+
+
 def plot_convergence(
     terms,
     errors,
@@ -1353,17 +1390,8 @@ def plot_convergence(
     x = _array(terms, "terms")
     if x.ndim != 1 or x.size == 0:
         raise ValueError(f"terms must be a non-empty 1-D array, got shape {x.shape}")
-    series = errors if isinstance(errors, dict) else {label: errors}
-    ys = {}
-    for name, err in series.items():
-        y = _array(err, "errors" if name is None else f"errors[{name!r}]")
-        if y.shape != x.shape:
-            raise ValueError(f"errors must have the shape of terms {x.shape}, got {y.shape}")
-        if (y < 0).any():
-            raise ValueError(f"errors must be >= 0 (they are norms), got min {y.min():.3g}")
-        if not (y > 0).any():
-            raise ValueError("no error is positive: nothing to show on a log scale")
-        ys[name] = np.where(y > 0, y, np.nan)
+    ys = _error_series(errors if isinstance(errors, dict) else {label: errors}, x.shape)
+    refs = _reference_curves(references or {}, x.shape)
     if ax is None:
         _text_arg(title, "title")
         fig, ax = plt.subplots(figsize=(5.6, 4.0), dpi=DPI, layout=_LAYOUT_2D)
@@ -1371,15 +1399,6 @@ def plot_convergence(
         if _dim(ax) != 2:
             raise TypeError("plot_convergence needs a 2D axes; got a 3D axes")
         fig = ax.figure
-    refs = {}
-    for name, ref in (references or {}).items():
-        y = _array(ref, f"references[{name!r}]")
-        if y.shape != x.shape or not (y > 0).all():
-            raise ValueError(
-                f"references[{name!r}] must be positive with the shape of terms "
-                f"{x.shape}, got shape {y.shape}"
-            )
-        refs[name] = y
     for name, y in ys.items():
         ax.plot(x, y, marker="o", markersize=4, linewidth=1.8, label=name)
     for name, y in refs.items():

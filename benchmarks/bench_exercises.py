@@ -9,6 +9,7 @@ hostile answer (a huge power, a long sum, a deep matrix power, a long string). T
 at most 20 ms, worst at most 1 s.
 """
 
+import functools
 import statistics
 import sys
 import time
@@ -21,8 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from course_lib import exercises  # noqa: E402
-from course_lib.exercises import Choice, Expr, Value, check  # noqa: E402
-from course_lib.exercises import _engine  # noqa: E402
+from course_lib.exercises import Choice, Value, _engine, check  # noqa: E402
 from tools import exercise_fingerprints as F  # noqa: E402
 
 REPEATS = 7
@@ -55,9 +55,11 @@ def answers(ex):
     if isinstance(spec, Choice):
         hostile = "ab" * 50_000
     elif isinstance(spec, Value):
-        hostile = np.full(spec.shape, sp.Add(*[sp.sin(k) for k in range(1, 300)]),
-                          dtype=object).tolist() if spec.shape else sp.Add(
-            *[sp.sin(k) for k in range(1, 1400)])
+        hostile = (
+            np.full(spec.shape, sp.Add(*[sp.sin(k) for k in range(1, 300)]), dtype=object).tolist()
+            if spec.shape
+            else sp.Add(*[sp.sin(k) for k in range(1, 1400)])
+        )
     elif spec.matrix_degree is not None:
         mats = [s for s in spec.allowed if isinstance(s, sp.MatrixSymbol)]
         square = next((m for m in mats if m.shape == (3, 3)), None)
@@ -73,20 +75,24 @@ def answers(ex):
 
 
 def main():
-    print(f"{'exercise':26} {'right':>15} {'wrong':>15} {'hostile':>15}   "
-          f"(median / worst of {REPEATS}, ms)")
+    print(
+        f"{'exercise':26} {'right':>15} {'wrong':>15} {'hostile':>15}   "
+        f"(median / worst of {REPEATS}, ms)"
+    )
     medians, worsts = [], []
     for name, ex in exercises.EXERCISES.items():
         cells = []
         for answer in answers(ex):
-            med, worst = timings(lambda a=answer: check(name, a))
+            med, worst = timings(functools.partial(check, name, answer))
             medians.append(med)
             worsts.append(worst)
             cells.append(f"{med * 1e3:6.1f} / {worst * 1e3:6.1f}")
         print(f"{name:26} " + " ".join(f"{c:>15}" for c in cells))
-    print(f"\nslowest median {max(medians) * 1e3:.1f} ms (target {MEDIAN_TARGET * 1e3:.0f} ms, "
-          f"ratio {max(medians) / MEDIAN_TARGET:.2f}); slowest worst {max(worsts) * 1e3:.1f} ms "
-          f"(target {WORST_TARGET * 1e3:.0f} ms, ratio {max(worsts) / WORST_TARGET:.2f})")
+    print(
+        f"\nslowest median {max(medians) * 1e3:.1f} ms (target {MEDIAN_TARGET * 1e3:.0f} ms, "
+        f"ratio {max(medians) / MEDIAN_TARGET:.2f}); slowest worst {max(worsts) * 1e3:.1f} ms "
+        f"(target {WORST_TARGET * 1e3:.0f} ms, ratio {max(worsts) / WORST_TARGET:.2f})"
+    )
 
 
 if __name__ == "__main__":

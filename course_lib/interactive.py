@@ -48,9 +48,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from . import plotting, so3
-from ._arrays import as_angles, as_count, as_vectors
+from ._arrays import as_angles, as_count, as_direction, as_scalar, as_unit_axes, as_vector3
 from .rodrigues import (
-    _unit_axis,
     axis_from_spherical,
     rodrigues_terms,
     rodrigues_vectors,
@@ -167,12 +166,8 @@ def rodrigues_readout(axis, theta, decimals=2, tol=TOL):
     decimals = as_count(decimals, "decimals")
     if decimals > 6:
         raise ValueError(f"decimals must be between 0 and 6, got {decimals}")
-    w = _unit_axis(axis, tol)
-    if w.shape != (3,):
-        raise ValueError(f"axis must be a single 3-vector of shape (3,), got shape {w.shape}")
-    theta = as_angles(theta, "theta")
-    if theta.shape != ():
-        raise ValueError(f"theta must be a single angle, got shape {theta.shape}")
+    w = as_unit_axes(as_vector3(axis, "axis"), "axis", tol)
+    theta = _scalar_angle(theta, "theta")
     terms = rodrigues_terms(w, theta, tol)
     R = so3.exp(w, theta)
     th = _fmt(theta, decimals)
@@ -189,26 +184,43 @@ def rodrigues_readout(axis, theta, decimals=2, tol=TOL):
 # --------------------------------------------------------------------------------------------
 
 
-def _scalar_angle(x, name):
+def _single(x, name, what="angle (a number)"):
+    """A single finite real number; the message says what kind of number ``name`` is."""
     a = as_angles(x, name)
     if a.shape != ():
-        raise ValueError(f"{name} must be a single angle (a number), got shape {a.shape}")
+        raise ValueError(f"{name} must be a single {what}, got shape {a.shape}")
     return float(a)
+
+
+def _scalar_angle(x, name):
+    return _single(x, name)
 
 
 def _view_angle(x, name):
     """A camera angle in degrees: a single finite real number (any value, as ``view_init``)."""
-    a = as_angles(x, name)
-    if a.shape != ():
-        raise ValueError(
-            f"{name} must be a single viewing angle in degrees (a number), got shape {a.shape}"
-        )
-    return float(a)
+    return _single(x, name, "viewing angle in degrees (a number)")
 
 
-def _set_view(ax, elev, azim):
-    """Point the camera of a 3D axes; only the view changes, not what is drawn."""
-    ax.view_init(elev=elev, azim=azim)
+def _rotation_view(ax, func, polar, azimuth, theta, elev, azim):
+    """Check the angles, point the camera; the axis, the angle and the rotation to draw.
+
+    Only the view changes with ``(elev, azim)``, not what is drawn.
+    """
+    plotting._require_3d(ax, func)
+    polar = _scalar_angle(polar, "polar")
+    azimuth = _scalar_angle(azimuth, "azimuth")
+    theta = _scalar_angle(theta, "theta")
+    ax.view_init(elev=_view_angle(elev, "elev"), azim=_view_angle(azim, "azim"))
+    w = axis_from_spherical(polar, azimuth)
+    return w, theta, so3.exp(w, theta)
+
+
+def _moving_axes(w):
+    """The world axes e_i (with their colours) that a rotation about the unit axis w moves."""
+    for i, color in enumerate(plotting.FRAME_COLORS):
+        e = np.eye(3)[i]
+        if np.linalg.norm(e - (w @ e) * w) > TOL:
+            yield e, color
 
 
 def _draw_axis_line(ax, w, length=1.4):
@@ -273,30 +285,39 @@ def draw_rotated_frame(ax, polar, azimuth, theta, *, elev=VIEW_ELEV, azim=VIEW_A
     True
     >>> plt.close("all")
     """
-    plotting._require_3d(ax, "draw_rotated_frame")
-    polar = _scalar_angle(polar, "polar")
-    azimuth = _scalar_angle(azimuth, "azimuth")
-    theta = _scalar_angle(theta, "theta")
-    elev = _view_angle(elev, "elev")
-    azim = _view_angle(azim, "azim")
-    _set_view(ax, elev, azim)
-    w = axis_from_spherical(polar, azimuth)
-    R = so3.exp(w, theta)
+    w, theta, R = _rotation_view(ax, "draw_rotated_frame", polar, azimuth, theta, elev, azim)
     artists = []
     # World frame A: axis labels x_A, y_A, z_A but no name at the origin, where B's name goes.
     artists.extend(plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES))
     artists.extend(_draw_axis_line(ax, w))
     arcs = []
-    for i, color in enumerate(plotting.FRAME_COLORS):
-        e = np.eye(3)[i]
-        if np.linalg.norm(e - (w @ e) * w) > TOL and theta != 0.0:
-            arc = plotting.draw_arc(ax, w, e, theta, color=color, style="dotted", arrow=False)
-            artists.extend(arc)
-            arcs.append(arc.points)
+    moving = list(_moving_axes(w)) if theta != 0.0 else []  # a zero angle moves nothing
+    for e, color in moving:
+        arc = plotting.draw_arc(ax, w, e, theta, color=color, style="dotted", arrow=False)
+        artists.extend(arc)
+        arcs.append(arc.points)
     body = plotting.draw_frame(ax, R, label="B")
     artists.extend(body)
     return plotting.Drawn(
         "rotated_frame", artists, body.points, R=R, axis=w, theta=theta, arcs=arcs
+    )
+
+
+def _draw_orbit(ax, w, q0):
+    """The dotted circle that q0 travels about the unit axis w, or None if q0 is on the axis."""
+    center = (w @ q0) * w
+    if np.linalg.norm(q0 - center) <= TOL:
+        return None
+    return plotting.draw_arc(
+        ax,
+        w,
+        q0 - center,
+        2.0 * np.pi,
+        center=center,
+        n=90,
+        color="0.6",
+        style="dotted",
+        arrow=False,
     )
 
 
@@ -356,39 +377,17 @@ def draw_rodrigues_terms(ax, polar, azimuth, theta, q0=Q0, *, elev=VIEW_ELEV, az
     (35.0, -30.0)
     >>> plt.close(fig)
     """
-    plotting._require_3d(ax, "draw_rodrigues_terms")
-    polar = _scalar_angle(polar, "polar")
-    azimuth = _scalar_angle(azimuth, "azimuth")
-    theta = _scalar_angle(theta, "theta")
-    q0 = as_vectors(q0, "q0")
-    if q0.shape != (3,):
-        raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
-    elev = _view_angle(elev, "elev")
-    azim = _view_angle(azim, "azim")
-    _set_view(ax, elev, azim)
-    w = axis_from_spherical(polar, azimuth)
-    R = so3.exp(w, theta)
+    q0 = as_vector3(q0, "q0")
+    w, theta, R = _rotation_view(ax, "draw_rodrigues_terms", polar, azimuth, theta, elev, azim)
     q = R @ q0
     terms = np.stack(rodrigues_vectors(w, theta, q0))
     chain = np.concatenate([np.zeros((1, 3)), np.cumsum(terms, axis=0)])
     artists = []
     artists.extend(_draw_axis_line(ax, w))
-    center = (w @ q0) * w
-    circle = None
-    if np.linalg.norm(q0 - center) > TOL:
-        arc = plotting.draw_arc(
-            ax,
-            w,
-            q0 - center,
-            2.0 * np.pi,
-            center=center,
-            n=90,
-            color="0.6",
-            style="dotted",
-            arrow=False,
-        )
-        artists.extend(arc)
-        circle = arc.points
+    circle = _draw_orbit(ax, w, q0)
+    if circle is not None:
+        artists.extend(circle)
+        circle = circle.points
     for k in range(3):
         artists.extend(plotting.draw_vector(ax, terms[k], origin=chain[k], color=_TERM_COLORS[k]))
     artists.extend(plotting.draw_vector(ax, q, color=_RESULT_COLOR, linewidth=2.6))
@@ -684,9 +683,7 @@ def rodrigues_explorer(
     >>> np.allclose(w.result.sum(axis=0), so3.exp(axis, 1.0) @ Q0)
     True
     """
-    q0 = as_vectors(q0, "q0")
-    if q0.shape != (3,):
-        raise ValueError(f"q0 must be a single 3-vector of shape (3,), got shape {q0.shape}")
+    q0 = as_vector3(q0, "q0")
 
     def draw(ax, polar, azimuth, theta, elev, azim):
         return draw_rodrigues_terms(ax, polar, azimuth, theta, q0, elev=elev, azim=azim)
@@ -786,24 +783,12 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
     dpi = as_count(dpi, "dpi", minimum=20)
     if dpi > 150:
         raise ValueError(f"dpi must be between 20 and 150, got {dpi}")
-    size = _scalar_angle(size, "size")
+    size = as_scalar(size, "size")
     if not 1.0 <= size <= 8.0:
         raise ValueError(f"size must be between 1 and 8 inches, got {size:g}")
     times = spin_times(frames, duration)
     rotations = spin_rotations(axis, times)
-    w = as_vectors(axis, "axis")
-    w = w / np.linalg.norm(w)
-
-    fig, ax = plotting.axes3d(r"Spinning at $\|\omega\| = 1$ rad/s", lim=1.1, figsize=(size, size))
-    ax.set_axis_off()  # panes and ticks would change nothing but triple the stored size
-    fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.92)
-    plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES)
-    _draw_axis_line(ax, w)
-    for i, color in enumerate(plotting.FRAME_COLORS):
-        e = np.eye(3)[i]
-        if np.linalg.norm(e - (w @ e) * w) > TOL:
-            plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
-    clock = ax.text2D(0.5, 0.02, "", transform=ax.transAxes, ha="center")
+    fig, ax, clock = _spin_scene(as_direction(axis, "axis"), size)
     body = []
 
     def update(k):
@@ -816,12 +801,29 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
 
     interval_ms = 1000.0 * float(times[1] - times[0])
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=interval_ms, blit=False)
-    writer = _PaletteHTMLWriter(fps=1000.0 / interval_ms, embed_frames=True, default_mode="loop")
     try:
-        with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp, "spin.html")
-            anim.save(str(path), writer=writer, dpi=dpi)
-            html = path.read_text()
+        return HTML(_html_player(anim, 1000.0 / interval_ms, dpi))
     finally:
         plt.close(fig)
-    return HTML(html)
+
+
+def _spin_scene(w, size):
+    """What stays still in the spin animation: world frame, axis, circles; and the clock text."""
+    fig, ax = plotting.axes3d(r"Spinning at $\|\omega\| = 1$ rad/s", lim=1.1, figsize=(size, size))
+    ax.set_axis_off()  # panes and ticks would change nothing but triple the stored size
+    fig.subplots_adjust(left=0.0, right=1.0, bottom=0.0, top=0.92)
+    plotting.draw_frame(ax, label=None, style="dotted", axis_names=_WORLD_AXES)
+    _draw_axis_line(ax, w)
+    for e, color in _moving_axes(w):
+        plotting.draw_arc(ax, w, e, 2.0 * np.pi, color=color, style="dotted", arrow=False, n=72)
+    clock = ax.text2D(0.5, 0.02, "", transform=ax.transAxes, ha="center")
+    return fig, ax, clock
+
+
+def _html_player(anim, fps, dpi):
+    """The HTML text of matplotlib's JavaScript player for ``anim``, palette PNG frames inside."""
+    writer = _PaletteHTMLWriter(fps=fps, embed_frames=True, default_mode="loop")
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp, "spin.html")
+        anim.save(str(path), writer=writer, dpi=dpi)
+        return path.read_text()

@@ -46,15 +46,15 @@ Conventions
 
 from __future__ import annotations
 
-import numpy as np
 import matplotlib.pyplot as plt
+import numpy as np
 from matplotlib.patches import FancyArrowPatch, Polygon
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from . import so3
-from ._arrays import as_count, as_float_array, require_finite
-from .tolerance import TOL
+from ._arrays import as_count, as_direction, as_float_array, as_vector3, require_finite
+from .tolerance import TOL, fmt_residual, tol_label
 
 __all__ = [
     "DPI",
@@ -190,6 +190,9 @@ def _array(x, name):
 
 
 def _vector(x, name, d):
+    """One finite d-vector: :func:`course_lib._arrays.as_vector3` on a 3D axes."""
+    if d == 3:
+        return as_vector3(x, name)
     a = _array(x, name)
     if a.shape != (d,):
         raise ValueError(
@@ -340,8 +343,9 @@ def _setup2d(ax, title, lim, labels):
     ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
 
 
-def axes3d(title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$", "$z$"),
-           figsize=FIGSIZE):
+def axes3d(
+    title, ax=None, lim=1.5, elev=20.0, azim=-60.0, labels=("$x$", "$y$", "$z$"), figsize=FIGSIZE
+):
     r"""Create (or set up) a 3D axes: equal-aspect cube, labelled x/y/z axes and a title.
 
     The cube is :math:`[-\mathrm{lim}, \mathrm{lim}]^3` (or :math:`[lo, hi]^3`), so lengths and
@@ -510,8 +514,7 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
     else:
         fig = plt.figure(figsize=(PANEL_SIZE * n, PANEL_SIZE), dpi=DPI, layout=_LAYOUT_2D)
     axes = [
-        fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None)
-        for i in range(n)
+        fig.add_subplot(1, n, i + 1, projection="3d" if kind == "3d" else None) for i in range(n)
     ]
     for ax, title in zip(axes, titles):
         if kind == "3d":
@@ -526,8 +529,16 @@ def axes_row(titles, kind="3d", lim=1.5, elev=20.0, azim=-60.0, labels=None):
 # --------------------------------------------------------------------------------------------
 
 
-def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", colors=FRAME_COLORS,
-               axis_names=("x", "y", "z")):
+def draw_frame(
+    ax,
+    R=None,
+    origin=None,
+    label="A",
+    scale=1.0,
+    style="solid",
+    colors=FRAME_COLORS,
+    axis_names=("x", "y", "z"),
+):
     r"""Draw a reference frame: the columns of ``R`` as arrows from ``origin``.
 
     The columns of :math:`R_{ab} = [x_{ab}\; y_{ab}\; z_{ab}]` (eq. 26) are the axes of frame B
@@ -590,8 +601,7 @@ def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", col
     names = list(axis_names)
     if len(colors) != d or len(names) != d:
         raise ValueError(
-            f"colors and axis_names must hold {d} entries each, "
-            f"got {len(colors)} and {len(names)}"
+            f"colors and axis_names must hold {d} entries each, got {len(colors)} and {len(names)}"
         )
     if label is not None:
         _text_arg(label, "label")
@@ -600,7 +610,7 @@ def draw_frame(ax, R=None, origin=None, label="A", scale=1.0, style="solid", col
         if n <= TOL:
             raise ValueError(
                 f"R column {i} ({names[i]} axis) has zero length: "
-                f"‖R e_{i + 1}‖ = {n:.1e} <= TOL = {TOL:g}"
+                f"‖R e_{i + 1}‖ = {fmt_residual(n, TOL)} ≤ {tol_label(TOL)}"
             )
     tips = o + s * R.T
     artists = []
@@ -756,8 +766,7 @@ def _beside(ax, d, direction):
     return n2[0] * right + n2[1] * up, ha, va
 
 
-def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2,
-                 label_at=0.65):
+def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=1.2, label_at=0.65):
     r"""Draw the segment from ``p`` to ``q``, e.g. the distance :math:`\|p_1 - p_2\|` of eq. (9).
 
     The label is written beside the point at the fraction :math:`t` = ``label_at`` of the way
@@ -832,8 +841,13 @@ def draw_segment(ax, p, q, label=None, color="black", style="dashed", linewidth=
         n, ha, va = _beside(ax, d, _unit(q - p))
         pos = p + t * (q - p) + _offset(ax) * n
         artists.append(_text(ax, pos, text, color=color, ha=ha, va=va))
-    return Drawn("segment", artists, np.stack([p, q]), length=float(np.linalg.norm(p - q)),
-                 label_position=pos)
+    return Drawn(
+        "segment",
+        artists,
+        np.stack([p, q]),
+        length=float(np.linalg.norm(p - q)),
+        label_position=pos,
+    )
 
 
 def draw_curve(ax, points, label=None, color="black", style="solid", arrow=False, linewidth=1.8):
@@ -950,7 +964,8 @@ def draw_plane(ax, a, b, origin=None, label=None, color="tab:gray", alpha=0.25, 
         area = float(abs(a[0] * b[1] - a[1] * b[0]))
     if area <= tol:
         raise ValueError(
-            f"a and b are parallel and span no plane: ‖a × b‖ = {area:.1e} <= TOL = {tol:g}"
+            f"a and b are parallel and span no plane: ‖a × b‖ = {fmt_residual(area, tol)} "
+            f"≤ {tol_label(tol)}"
         )
     corners = np.stack([o, o + a, o + a + b, o + b])
     if d == 3:
@@ -970,8 +985,19 @@ def _rotate_about(k, thetas, v):
     return so3.exp(thetas[:, None] * k) @ v
 
 
-def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black", style="solid",
-             arrow=True, tol=TOL):
+def draw_arc(
+    ax,
+    axis,
+    start,
+    angle,
+    center=None,
+    n=60,
+    label=None,
+    color="black",
+    style="solid",
+    arrow=True,
+    tol=TOL,
+):
     r"""Draw the arc swept by the vector ``start`` rotating about ``axis`` by ``angle``.
 
     The arc is the set of points
@@ -1038,30 +1064,9 @@ def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black
     n = as_count(n, "n (number of points on the arc)", minimum=2)
     ls = _linestyle(style)
     thetas = np.linspace(0.0, theta, n)
-    if d == 3:
-        if axis is None:
-            raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
-        w = _vector(axis, "axis", 3)
-        norm = float(np.linalg.norm(w))
-        if norm <= tol:
-            raise ValueError(f"axis must be non-zero: ‖axis‖ = {norm:.1e} <= TOL = {tol:g}")
-        k = w / norm
-        radius = float(np.linalg.norm(s - (k @ s) * k))
-        if radius <= tol:
-            raise ValueError(
-                f"start lies on the axis, so the arc is a single point: "
-                f"distance from the axis = {radius:.1e} <= TOL = {tol:g}"
-            )
-        pts = c + _rotate_about(k, thetas, s)
-    else:
-        if axis is not None:
-            raise TypeError("draw_arc on a 2D axes rotates in the plane: pass axis=None")
-        k = None
-        radius = float(np.linalg.norm(s))
-        if radius <= tol:
-            raise ValueError(f"start must be non-zero: ‖start‖ = {radius:.1e} <= TOL = {tol:g}")
-        cos, sin = np.cos(thetas), np.sin(thetas)
-        pts = c + np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
+    arc_points = _arc_points_3d if d == 3 else _arc_points_2d
+    k, radius, pts = arc_points(axis, s, thetas, tol)
+    pts = c + pts
     artists = [_line(ax, pts, color, ls)]
     if arrow and theta != 0.0:
         artists.append(_arrow(ax, pts[-2], pts[-1], color))
@@ -1076,11 +1081,48 @@ def draw_arc(ax, axis, start, angle, center=None, n=60, label=None, color="black
     return Drawn("arc", artists, pts, axis=k, radius=radius)
 
 
+def _arc_points_3d(axis, s, thetas, tol):
+    """The unit axis k, the radius and the points e^(k̂θ) s of an arc about the origin."""
+    if axis is None:
+        raise TypeError("draw_arc on a 3D axes needs an axis of rotation, got None")
+    k = as_direction(axis, "axis", tol)
+    radius = float(np.linalg.norm(s - (k @ s) * k))
+    if radius <= tol:
+        raise ValueError(
+            f"start lies on the axis, so the arc is a single point: "
+            f"distance from the axis = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
+        )
+    return k, radius, _rotate_about(k, thetas, s)
+
+
+def _arc_points_2d(axis, s, thetas, tol):
+    """No axis (the plane's normal), the radius and the points of s turned by each θ."""
+    if axis is not None:
+        raise TypeError("draw_arc on a 2D axes rotates in the plane: pass axis=None")
+    radius = float(np.linalg.norm(s))
+    if radius <= tol:
+        raise ValueError(
+            f"start must be non-zero: ‖start‖ = {fmt_residual(radius, tol)} ≤ {tol_label(tol)}"
+        )
+    cos, sin = np.cos(thetas), np.sin(thetas)
+    return None, radius, np.stack([cos * s[0] - sin * s[1], sin * s[0] + cos * s[1]], axis=-1)
+
+
 _BOX_FACES = ((0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5))
 
 
-def draw_box(ax, R=None, center=None, size=(0.5, 1.0, 0.1), marks=None, mark_labels=None,
-             frame=None, color="tab:blue", alpha=0.25, tol=TOL):
+def draw_box(
+    ax,
+    R=None,
+    center=None,
+    size=(0.5, 1.0, 0.1),
+    marks=None,
+    mark_labels=None,
+    frame=None,
+    color="tab:blue",
+    alpha=0.25,
+    tol=TOL,
+):
     r"""Draw a rigid box (e.g. the phone of eq. 9) with orientation ``R`` about ``center``.
 
     A point with body coordinates :math:`m` (relative to the box centre) is drawn at the world
@@ -1164,8 +1206,11 @@ def draw_box(ax, R=None, center=None, size=(0.5, 1.0, 0.1), marks=None, mark_lab
         world = c + M @ R.T
         artists.extend(draw_point(ax, world, label=mark_labels, color="black").artists)
     if frame is not None:
-        artists.extend(draw_frame(ax, R, origin=c, label=_text_arg(frame, "frame"),
-                                  scale=0.6 * float(size.max())).artists)
+        artists.extend(
+            draw_frame(
+                ax, R, origin=c, label=_text_arg(frame, "frame"), scale=0.6 * float(size.max())
+            ).artists
+        )
     return Drawn("box", artists, world, corners=corners)
 
 
@@ -1240,9 +1285,47 @@ def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
     return Drawn("pendulum", artists, np.stack([c, bob]), velocity=v)
 
 
-def plot_convergence(terms, errors, title="Convergence of the series", ax=None, label=None,
-                     show_tol=True, xlabel="number of terms $N$",
-                     ylabel=r"error $\|\cdot\|_F$ (log scale)", references=None, logx=False):
+def _error_series(series, shape):
+    """The error curves by name, each of ``shape``, >= 0; zeros become gaps (NaN) on a log scale."""
+    ys = {}
+    for name, err in series.items():
+        y = _array(err, "errors" if name is None else f"errors[{name!r}]")
+        if y.shape != shape:
+            raise ValueError(f"errors must have the shape of terms {shape}, got {y.shape}")
+        if (y < 0).any():
+            raise ValueError(f"errors must be >= 0 (they are norms), got min {y.min():.3g}")
+        if not (y > 0).any():
+            raise ValueError("no error is positive: nothing to show on a log scale")
+        ys[name] = np.where(y > 0, y, np.nan)
+    return ys
+
+
+def _reference_curves(references, shape):
+    """The reference curves by name, each positive and of ``shape``."""
+    refs = {}
+    for name, ref in references.items():
+        y = _array(ref, f"references[{name!r}]")
+        if y.shape != shape or not (y > 0).all():
+            raise ValueError(
+                f"references[{name!r}] must be positive with the shape of terms "
+                f"{shape}, got shape {y.shape}"
+            )
+        refs[name] = y
+    return refs
+
+
+def plot_convergence(
+    terms,
+    errors,
+    title="Convergence of the series",
+    ax=None,
+    label=None,
+    show_tol=True,
+    xlabel="number of terms $N$",
+    ylabel=r"error $\|\cdot\|_F$ (log scale)",
+    references=None,
+    logx=False,
+):
     r"""Semilog plot of an approximation error against the number of series terms.
 
     Made for the truncated series of the matrix exponential (eq. 124, 126),
@@ -1307,17 +1390,8 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     x = _array(terms, "terms")
     if x.ndim != 1 or x.size == 0:
         raise ValueError(f"terms must be a non-empty 1-D array, got shape {x.shape}")
-    series = errors if isinstance(errors, dict) else {label: errors}
-    ys = {}
-    for name, err in series.items():
-        y = _array(err, "errors" if name is None else f"errors[{name!r}]")
-        if y.shape != x.shape:
-            raise ValueError(f"errors must have the shape of terms {x.shape}, got {y.shape}")
-        if (y < 0).any():
-            raise ValueError(f"errors must be >= 0 (they are norms), got min {y.min():.3g}")
-        if not (y > 0).any():
-            raise ValueError("no error is positive: nothing to show on a log scale")
-        ys[name] = np.where(y > 0, y, np.nan)
+    ys = _error_series(errors if isinstance(errors, dict) else {label: errors}, x.shape)
+    refs = _reference_curves(references or {}, x.shape)
     if ax is None:
         _text_arg(title, "title")
         fig, ax = plt.subplots(figsize=(5.6, 4.0), dpi=DPI, layout=_LAYOUT_2D)
@@ -1325,13 +1399,6 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
         if _dim(ax) != 2:
             raise TypeError("plot_convergence needs a 2D axes; got a 3D axes")
         fig = ax.figure
-    refs = {}
-    for name, ref in (references or {}).items():
-        y = _array(ref, f"references[{name!r}]")
-        if y.shape != x.shape or not (y > 0).all():
-            raise ValueError(f"references[{name!r}] must be positive with the shape of terms "
-                             f"{x.shape}, got shape {y.shape}")
-        refs[name] = y
     for name, y in ys.items():
         ax.plot(x, y, marker="o", markersize=4, linewidth=1.8, label=name)
     for name, y in refs.items():
@@ -1340,7 +1407,7 @@ def plot_convergence(terms, errors, title="Convergence of the series", ax=None, 
     if logx:
         ax.set_xscale("log")
     if show_tol:
-        ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=f"TOL = {TOL:g}")
+        ax.axhline(TOL, color="0.4", linestyle=":", linewidth=1.2, label=tol_label(TOL))
     ax.set_xlabel(_text_arg(xlabel, "xlabel"), fontsize=FONT_SIZE)
     ax.set_ylabel(_text_arg(ylabel, "ylabel"), fontsize=FONT_SIZE)
     ax.set_title(_text_arg(title, "title"), fontsize=TITLE_SIZE)
@@ -1362,14 +1429,13 @@ _PANEL_KEYS = ("title", "frames", "vectors", "boxes", "axis")
 
 def _axis_line(ax, direction, label=None, origin=None, color="0.45"):
     """A dashed line through ``origin`` along ±``direction`` (length 1.2), labelled at its tip."""
-    k = _unit(_vector(direction, "axis direction", 3))
-    if np.linalg.norm(k) == 0.0:
-        raise ValueError("axis direction must be non-zero, got the zero vector")
+    k = as_direction(direction, "direction")
     o = _origin(origin, 3)
     artists = [_line(ax, [o - 1.2 * k, o + 1.2 * k], color, "--", 1.2)]
     if label is not None:
-        artists.append(_text(ax, o + (1.2 + _offset(ax)) * k, _text_arg(label, "label"),
-                             color=color))
+        artists.append(
+            _text(ax, o + (1.2 + _offset(ax)) * k, _text_arg(label, "label"), color=color)
+        )
     return Drawn("axis", artists, np.stack([o - 1.2 * k, o + 1.2 * k]))
 
 
@@ -1402,8 +1468,9 @@ def _panel_items(panel, key):
         items = [items]
     for item in items:
         if not isinstance(item, dict):
-            raise TypeError(f"panel[{key!r}] must hold dicts of keyword arguments, "
-                            f"got {type(item).__name__}")
+            raise TypeError(
+                f"panel[{key!r}] must hold dicts of keyword arguments, got {type(item).__name__}"
+            )
     return items
 
 
@@ -1474,8 +1541,9 @@ def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
             raise TypeError(f"panels[{i}] must be a dict, got {type(panel).__name__}")
         unknown = sorted(set(panel) - set(_PANEL_KEYS))
         if unknown:
-            raise ValueError(f"panels[{i}] has unknown keys {unknown}; "
-                             f"allowed are {list(_PANEL_KEYS)}")
+            raise ValueError(
+                f"panels[{i}] has unknown keys {unknown}; allowed are {list(_PANEL_KEYS)}"
+            )
         if "title" not in panel:
             raise TypeError(f"panels[{i}] needs a 'title' (str)")
     fig, axes = axes_row([p["title"] for p in panels], lim=lim, elev=elev, azim=azim)
@@ -1490,8 +1558,9 @@ def frame_panels(panels, lim=1.3, elev=22.0, azim=-55.0):
     return fig, axes, drawn
 
 
-def plot_error_curves(x, curves, title, xlabel, ylabel="error (log scale)", floor=1e-17,
-                      show_tol=True, reverse_x=True):
+def plot_error_curves(
+    x, curves, title, xlabel, ylabel="error (log scale)", floor=1e-17, show_tol=True, reverse_x=True
+):
     r"""Log-log plot of errors against a small parameter, e.g. :math:`\pi - \theta`.
 
     Drawn with :func:`plot_convergence` on a logarithmic x axis. Errors below ``floor``
@@ -1548,16 +1617,25 @@ def plot_error_curves(x, curves, title, xlabel, ylabel="error (log scale)", floo
         if (y < 0).any():
             raise ValueError(f"curves[{name!r}] must be >= 0 (errors), got min {y.min():.3g}")
         clipped[name] = np.maximum(y, low)
-    fig, ax = plot_convergence(xs, clipped, title=title, show_tol=show_tol, xlabel=xlabel,
-                               ylabel=ylabel)
+    fig, ax = plot_convergence(
+        xs, clipped, title=title, show_tol=show_tol, xlabel=xlabel, ylabel=ylabel
+    )
     ax.set_xscale("log")
     if reverse_x:
         ax.invert_xaxis()
     return fig, ax
 
 
-def plot_geodesic(R0, R1, steps=4, samples=61, title="Interpolating along the geodesic",
-                  lim=1.2, elev=22.0, azim=-50.0):
+def plot_geodesic(
+    R0,
+    R1,
+    steps=4,
+    samples=61,
+    title="Interpolating along the geodesic",
+    lim=1.2,
+    elev=22.0,
+    azim=-50.0,
+):
     r"""Frames along the geodesic from ``R0`` to ``R1`` and the paths of their axis tips.
 
     The geodesic is
@@ -1621,8 +1699,9 @@ def plot_geodesic(R0, R1, steps=4, samples=61, title="Interpolating along the ge
     return fig, ax, path
 
 
-def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in space",
-                          lim=1.2, elev=30.0, azim=-40.0):
+def plot_rodrigues_circle(
+    omega, q, theta, title="Rodrigues' formula, seen in space", lim=1.2, elev=30.0, azim=-40.0
+):
     r"""The geometry of Rodrigues' formula: a point turning on a circle about the axis.
 
     With a unit axis :math:`\omega`, the point :math:`q` splits into a part along the axis and a
@@ -1680,8 +1759,10 @@ def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in sp
     q_par = (w @ q) * w
     q_perp = q - q_par
     if np.linalg.norm(q_perp) <= TOL:
-        raise ValueError(f"q lies on the axis (‖q_perp‖ = {np.linalg.norm(q_perp):.1e} <= "
-                         f"TOL = {TOL:g}): it does not move, there is no circle to draw")
+        raise ValueError(
+            f"q lies on the axis (‖q_perp‖ = {fmt_residual(np.linalg.norm(q_perp), TOL)} ≤ "
+            f"{tol_label(TOL)}): it does not move, there is no circle to draw"
+        )
     w_x_q = np.cross(w, q)
     fig, ax = axes3d(title, lim=lim, elev=elev, azim=azim)
     _axis_line(ax, w, label=r"$\omega$")
@@ -1693,12 +1774,12 @@ def plot_rodrigues_circle(omega, q, theta, title="Rodrigues' formula, seen in sp
     _text(ax, q_par - 0.5 * _offset(ax) * (right + up), r"$q_\parallel$", ha="right", va="top")
     draw_vector(ax, q_perp, origin=q_par, color="tab:blue")
     n, ha, va = _beside(ax, 3, q_perp)  # q_perp ends where q ends: label it at its middle
-    _text(ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue",
-          ha=ha, va=va)
+    _text(
+        ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue", ha=ha, va=va
+    )
     draw_vector(ax, w_x_q, origin=q_par, label=r"$\omega\times q$", color="tab:green")
     cos_part = np.cos(th) * q_perp
     draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")
-    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green",
-                style="dashed")
+    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green", style="dashed")
     draw_vector(ax, Rq, color="tab:red", label=r"$e^{\hat\omega\theta}q$")
     return fig, ax, {"q_par": q_par, "q_perp": q_perp, "w_x_q": w_x_q, "Rq": Rq}

@@ -25,7 +25,7 @@ and the azimuth :math:`\lambda` (in the xy plane, from the x axis).
 import numpy as np
 
 from . import so3
-from ._arrays import as_angles, as_count, as_vectors
+from ._arrays import as_angles, as_count, as_direction, as_scalar, as_unit_axes, as_vectors
 from .tolerance import TOL
 
 __all__ = [
@@ -36,14 +36,6 @@ __all__ = [
     "spin_times",
     "spin_rotations",
 ]
-
-
-def _scalar(x, name):
-    """A single finite real number."""
-    a = as_angles(x, name)
-    if a.shape != ():
-        raise ValueError(f"{name} must be a single number, got shape {a.shape}")
-    return float(a)
 
 
 def axis_from_spherical(polar, azimuth):
@@ -136,22 +128,6 @@ def rotated_frame(polar, azimuth, theta):
     return so3.exp(axis, theta)
 
 
-def _unit_axis(axis, tol=TOL, name="axis"):
-    """A (..., 3) array of unit vectors, or ValueError naming the norm that is off."""
-    w = as_vectors(axis, name)
-    norm = np.linalg.norm(w, axis=-1)
-    off = np.abs(norm - 1.0)
-    if not np.all(off <= tol):
-        worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
-        where = f" at batch index {tuple(int(i) for i in worst)}" if worst else ""
-        raise ValueError(
-            f"{name} is not a unit vector: ‖{name}‖ = {float(norm[worst]):.6g}, "
-            f"|‖{name}‖ − 1| = {float(off[worst]):.1e} > TOL = {tol:.0e}{where}; "
-            f"expected ‖{name}‖ = 1 (divide by its norm)"
-        )
-    return w
-
-
 def rodrigues_terms(axis, theta, tol=TOL):
     r"""The three terms of Rodrigues' formula, whose sum is :math:`e^{\hat\omega\theta}`.
 
@@ -196,7 +172,7 @@ def rodrigues_terms(axis, theta, tol=TOL):
     >>> np.allclose(I + S + C, so3.exp([0, 0, 1], np.pi / 2))
     True
     """
-    w = _unit_axis(axis, tol)
+    w = as_unit_axes(axis, "axis", tol)
     theta = as_angles(theta, "theta")
     W = so3.hat(w)
     W2 = W @ W
@@ -311,7 +287,7 @@ def spin_times(frames, duration=2.0 * np.pi):
     array([0. , 0.5, 1. , 1.5])
     """
     frames = as_count(frames, "frames", minimum=2)
-    duration = _scalar(duration, "duration")
+    duration = as_scalar(duration, "duration")
     if not duration > 0:
         raise ValueError(f"duration must be > 0 seconds, got {duration:g}")
     return np.arange(frames) * (duration / frames)
@@ -351,14 +327,6 @@ def spin_rotations(axis, t):
     >>> np.round(R[1] @ [1, 0, 0], 12)
     array([0., 1., 0.])
     """
-    w = as_vectors(axis, "axis")
-    if w.shape != (3,):
-        raise ValueError(f"axis must be a single 3-vector of shape (3,), got shape {w.shape}")
-    norm = float(np.linalg.norm(w))
-    if norm <= TOL:
-        raise ValueError(
-            f"axis must be non-zero to define a direction of spin: ‖axis‖ = {norm:.1e} "
-            f"<= TOL = {TOL:.0e}"
-        )
+    w = as_direction(axis, "axis")
     t = as_angles(t, "t")
-    return so3.exp(w / norm, t)
+    return so3.exp(w, t)

@@ -62,9 +62,11 @@ CODE_STUB = "# YOUR CODE HERE"
 MARKDOWN_STUB = "YOUR ANSWER HERE"
 # (marker words, the nbgrader metadata flag a cell needs to hold them, nbgrader's name of such
 # cells); in nbgrader's order: solutions are cleared first, then hidden tests, then mark schemes.
-REGIONS = (("SOLUTION", "solution", "solution cells"),
-           ("HIDDEN TESTS", "grade", "autograder test cells"),
-           ("MARK SCHEME", "task", "manually graded task cells"))
+REGIONS = (
+    ("SOLUTION", "solution", "solution cells"),
+    ("HIDDEN TESTS", "grade", "autograder test cells"),
+    ("MARK SCHEME", "task", "manually graded task cells"),
+)
 CELL_RUN_STATE = ("collapsed", "scrolled", "execution")
 NOTEBOOK_RUN_STATE = ("widgets", "celltoolbar")
 _ANSWER = re.compile(r"\banswer_([A-Za-z_][A-Za-z0-9_]*)\b")
@@ -76,6 +78,7 @@ class StudentNotebookError(ValueError):
 
 
 # --------------------------------------------------------------------------------- one notebook
+
 
 def _where(nb_name, index, cell):
     cid = cell.get("id")
@@ -98,9 +101,10 @@ def _exercise_label(cell):
 
 def _stub_lines(cell):
     if cell.cell_type == "code":
-        return [CODE_STUB,
-                f"raise NotImplementedError(\"write your solution to {_exercise_label(cell)} "
-                "here\")"]
+        return [
+            CODE_STUB,
+            f'raise NotImplementedError("write your solution to {_exercise_label(cell)} here")',
+        ]
     return [MARKDOWN_STUB]
 
 
@@ -111,15 +115,16 @@ def _clear_region(lines, words, stub, where, hint=""):
     for number, line in enumerate(lines, 1):
         if begin in line:
             if start is not None:
-                raise StudentNotebookError(f"{where}: nested {begin} at line {number} "
-                                           f"(the one at line {start} is not closed){hint}")
+                raise StudentNotebookError(
+                    f"{where}: nested {begin} at line {number} "
+                    f"(the one at line {start} is not closed){hint}"
+                )
             start, found = number, True
             indent = re.match(r"\s*", line).group(0)
             out += [indent + s for s in stub]
         elif end in line:
             if start is None:
-                raise StudentNotebookError(f"{where}: {end} without {begin} at line {number}"
-                                           f"{hint}")
+                raise StudentNotebookError(f"{where}: {end} without {begin} at line {number}{hint}")
             start = None
         elif start is None:
             out.append(line)
@@ -134,14 +139,21 @@ def _clear_cell(cell, where):
     lines = original.split("\n")
     for words, flag, kind in REGIONS:
         stub = _stub_lines(cell) if flag == "solution" else []
-        hint = "" if _flag(cell, flag) else (
-            f"; nbgrader, too, takes any line containing 'BEGIN {words}' or 'END {words}' for "
-            f"a marker, even in prose, and allows markers only in {kind} "
-            f"(\"{flag}\": true)")
+        hint = (
+            ""
+            if _flag(cell, flag)
+            else (
+                f"; nbgrader, too, takes any line containing 'BEGIN {words}' or 'END {words}' for "
+                f"a marker, even in prose, and allows markers only in {kind} "
+                f'("{flag}": true)'
+            )
+        )
         lines, found = _clear_region(lines, words, stub, where, hint)
         if found and not _flag(cell, flag):
-            raise StudentNotebookError(f"{where}: a line contains 'BEGIN {words}' but the cell "
-                                       f"has no nbgrader metadata with \"{flag}\": true{hint}")
+            raise StudentNotebookError(
+                f"{where}: a line contains 'BEGIN {words}' but the cell "
+                f'has no nbgrader metadata with "{flag}": true{hint}'
+            )
         if flag == "solution" and _flag(cell, "solution") and not found:
             lines = _stub_lines(cell)  # nbgrader replaces a solution cell without markers whole
     cell.source = "\n".join(lines)
@@ -195,8 +207,10 @@ def student_notebook(nb, name="notebook"):
     """
     language = nb.get("metadata", {}).get("kernelspec", {}).get("language", "python")
     if language != "python":
-        raise StudentNotebookError(f"{name}: kernel language {language!r}; the stubs are "
-                                   "Python (language 'python' expected)")
+        raise StudentNotebookError(
+            f"{name}: kernel language {language!r}; the stubs are "
+            "Python (language 'python' expected)"
+        )
     new = copy.deepcopy(nb)
     for key in NOTEBOOK_RUN_STATE:
         new.metadata.pop(key, None)
@@ -206,14 +220,16 @@ def student_notebook(nb, name="notebook"):
         gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
         if gid is not None:
             if gid in seen:
-                raise StudentNotebookError(f"{where}: grade_id {gid!r} repeats the one of cell "
-                                           f"{seen[gid]}")
+                raise StudentNotebookError(
+                    f"{where}: grade_id {gid!r} repeats the one of cell {seen[gid]}"
+                )
             seen[gid] = i
         _clear_cell(cell, where)
     return new
 
 
 # --------------------------------------------------------------------------------- a directory
+
 
 def _is_relative_to(path, other):
     return path == other or other in path.parents
@@ -234,13 +250,18 @@ def _check_target(target, src, src_r, source_inodes, force):
     if not os.path.lexists(target):
         return
     if target.is_dir():
-        raise StudentNotebookError(f"{target} is a directory in the way of the student copy; "
-                                   "move it away or choose another output directory")
+        raise StudentNotebookError(
+            f"{target} is a directory in the way of the student copy; "
+            "move it away or choose another output directory"
+        )
     st = target.stat() if target.exists() else None
     if _is_relative_to(target.resolve(), src_r) or (
-            st is not None and (st.st_dev, st.st_ino) in source_inodes):
-        raise StudentNotebookError(f"{target} is a link to a file of the source directory {src}; "
-                                   "refusing to replace it (remove it first)")
+        st is not None and (st.st_dev, st.st_ino) in source_inodes
+    ):
+        raise StudentNotebookError(
+            f"{target} is a link to a file of the source directory {src}; "
+            "refusing to replace it (remove it first)"
+        )
     if not force:
         raise StudentNotebookError(f"{target} exists; use --force to overwrite")
 
@@ -256,8 +277,10 @@ def _read_sources(src):
         except Exception as err:  # noqa: BLE001 - reported as one line
             raise StudentNotebookError(f"{path}: cannot read the notebook: {err}") from None
         if nb.get("nbformat") != 4:
-            raise StudentNotebookError(f"{path}: nbformat {nb.get('nbformat')} notebooks are "
-                                       "not supported (version 4 expected)")
+            raise StudentNotebookError(
+                f"{path}: nbformat {nb.get('nbformat')} notebooks are "
+                "not supported (version 4 expected)"
+            )
         notebooks.append((path, nb))
     return notebooks
 
@@ -268,6 +291,7 @@ def _serialized(nb):
 
 
 # --------------------------------------------------------------------------------- all or nothing
+
 
 def _make_dirs(directory):
     """Create ``directory`` and its missing parents; return those created, outermost first."""
@@ -293,20 +317,20 @@ def _write_file(path, data):
     with open(path, "xb") as f:
         f.write(data)
         f.flush()
-        os.fsync(f.fileno())   # a full disk shows here at the latest, not after the move
+        os.fsync(f.fileno())  # a full disk shows here at the latest, not after the move
 
 
 def _move_into_place(stage, names, out):
     """Rename the staged files over their targets; on any failure put the old ones back."""
     old = stage / ".replaced"
     old.mkdir()
-    done = []    # (target, backup or None, new file in place)
+    done = []  # (target, backup or None, new file in place)
     try:
         for name in names:
             target, backup = out / name, None
             if os.path.lexists(target):
                 backup = old / name
-                os.rename(target, backup)      # the directory entry moves; its file is untouched
+                os.rename(target, backup)  # the directory entry moves; its file is untouched
             done.append([target, backup, False])
             os.rename(stage / name, target)
             done[-1][2] = True
@@ -318,7 +342,7 @@ def _move_into_place(stage, names, out):
                 if backup is not None:
                     os.rename(backup, target)
             except OSError:
-                pass     # the old file stays in .replaced; _write_all keeps it and says where
+                pass  # the old file stays in .replaced; _write_all keeps it and says where
         raise
 
 
@@ -334,9 +358,11 @@ def _write_all(files, out):
     except BaseException as err:
         kept = stage / ".replaced" if stage is not None else None
         if kept is not None and kept.is_dir() and any(kept.iterdir()):
-            raise StudentNotebookError(f"cannot write the student copies to {out} ({err!r}) and "
-                                       f"could not put the previous files back; they are in "
-                                       f"{kept}") from None
+            raise StudentNotebookError(
+                f"cannot write the student copies to {out} ({err!r}) and "
+                f"could not put the previous files back; they are in "
+                f"{kept}"
+            ) from None
         if stage is not None:
             shutil.rmtree(stage, ignore_errors=True)
         _remove_dirs(created)
@@ -375,7 +401,8 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     >>> make_student_notebooks("notebooks", "notebooks/student")
     Traceback (most recent call last):
     ...
-    course_lib.student.StudentNotebookError: output directory notebooks/student is inside the source directory notebooks; choose one outside it
+    course_lib.student.StudentNotebookError: output directory notebooks/student is inside the
+    source directory notebooks; choose one outside it
     """
     src, out = Path(src_dir), Path(out_dir)
     src_r, out_r = src.resolve(), out.resolve()
@@ -386,8 +413,9 @@ def make_student_notebooks(src_dir, out_dir, force=False):
         raise StudentNotebookError(f"source directory {src} does not exist")
     if os.path.lexists(out) and not out.is_dir():
         raise StudentNotebookError(f"output path {out} exists and is not a directory")
-    files = {path.name: _serialized(student_notebook(nb, str(path)))
-             for path, nb in _read_sources(src)}
+    files = {
+        path.name: _serialized(student_notebook(nb, str(path))) for path, nb in _read_sources(src)
+    }
     try:
         source_inodes = _inodes(src)
         for name in files:
@@ -396,8 +424,9 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     except OSError as err:
         what = err.strerror or type(err).__name__
         where = f" ({err.filename})" if err.filename else ""
-        raise StudentNotebookError(f"cannot write the student copies to {out}: {what}{where}; "
-                                   "nothing was written") from None
+        raise StudentNotebookError(
+            f"cannot write the student copies to {out}: {what}{where}; nothing was written"
+        ) from None
     return [out / name for name in files]
 
 
@@ -406,7 +435,8 @@ def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="python -m course_lib.student",
         description="Write student copies of the notebooks of SRC_DIR into OUT_DIR: solutions "
-                    "replaced by stubs, outputs cleared; all of them or nothing.")
+        "replaced by stubs, outputs cleared; all of them or nothing.",
+    )
     parser.add_argument("src_dir", metavar="SRC_DIR")
     parser.add_argument("out_dir", metavar="OUT_DIR")
     parser.add_argument("--force", action="store_true", help="replace existing files")

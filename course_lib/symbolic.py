@@ -32,13 +32,13 @@ Everything avoids ``sp.simplify``: the identities here reduce to zero under ``sp
 under a time budget.
 """
 
-from functools import lru_cache
+from functools import cache
 from math import factorial
 
 import numpy as np
 import sympy as sp
 
-from .tolerance import TOL
+from .tolerance import TOL, fmt_residual, tol_label
 
 __all__ = [
     "omega",
@@ -146,9 +146,7 @@ def rotation_symbols(name="r"):
         raise TypeError(f"matrix name must be a str, got {type(name).__name__}")
     if not name.isidentifier():
         raise ValueError(f"matrix name must be a valid identifier like 'r', got {name!r}")
-    return sp.ImmutableMatrix(
-        3, 3, lambda i, j: sp.Symbol(f"{name}_{i + 1}{j + 1}", real=True)
-    )
+    return sp.ImmutableMatrix(3, 3, lambda i, j: sp.Symbol(f"{name}_{i + 1}{j + 1}", real=True))
 
 
 #: The angular-velocity / rotation-axis vector :math:`\omega = (\omega_1, \omega_2, \omega_3)^T`,
@@ -175,8 +173,28 @@ xx, yy, xy = sp.symbols("x·x y·y x·y", real=True)
 W = sp.MatrixSymbol("W", 3, 3)
 u, X, Y, d = (sp.MatrixSymbol(n, 3, 1) for n in ("u", "X", "Y", "d"))
 A, B, R = (sp.MatrixSymbol(n, 3, 3) for n in ("A", "B", "R"))
-__all__ += ["x", "y", "z", "t", "a", "x_0", "alpha", "beta", "phi", "xx", "yy", "xy",
-            "W", "u", "X", "Y", "d", "A", "B", "R"]
+__all__ += [
+    "x",
+    "y",
+    "z",
+    "t",
+    "a",
+    "x_0",
+    "alpha",
+    "beta",
+    "phi",
+    "xx",
+    "yy",
+    "xy",
+    "W",
+    "u",
+    "X",
+    "Y",
+    "d",
+    "A",
+    "B",
+    "R",
+]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -207,9 +225,7 @@ def _as_vector3(a, what="a"):
                 f"got {type(a).__name__}"
             ) from None
         if len(entries) != 3:
-            raise ValueError(
-                f"{what} must be a 3-vector (3 entries), got {len(entries)} entries"
-            )
+            raise ValueError(f"{what} must be a 3-vector (3 entries), got {len(entries)} entries")
     out = []
     for k, x in enumerate(entries):
         try:
@@ -545,8 +561,7 @@ def unit_reduce(expr, w=omega):
         den_r = _reduce_poly(sp.expand(den), gens)
     except sp.PolynomialError:
         raise ValueError(
-            f"unit_reduce needs a polynomial (or rational function) in {g1}, {g2}, {g3}; "
-            f"got {expr}"
+            f"unit_reduce needs a polynomial (or rational function) in {g1}, {g2}, {g3}; got {expr}"
         ) from None
     if den_r == 0:
         raise ValueError(f"the denominator of {expr} vanishes on the unit sphere")
@@ -563,7 +578,7 @@ def _norm_squared(a):
     return a1**2 + a2**2 + a3**2
 
 
-@lru_cache(maxsize=None)
+@cache
 def _hat_power_identity(wt, power, unit):
     wcol = sp.Matrix(wt)
     W = hat(wcol)
@@ -719,7 +734,7 @@ def exp_series(A, terms):
     return total.applyfunc(sp.expand)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _rodrigues_coefficients(order, th):
     # Coefficients (c0, c1, c2) of hat(w)**n in the basis I, hat(w), hat(w)**2 for unit w.
     # Multiplying by hat(w): c0 I + c1 W + c2 W**2 -> c0 W + c1 W**2 + c2 W**3, W**3 = -W.
@@ -958,7 +973,7 @@ def so3_constraints(R=None):
     return [sp.expand(G[i, j]) for i, j in _CONSTRAINT_ENTRIES]
 
 
-@lru_cache(maxsize=None)
+@cache
 def _constraint_jacobian():
     R = rotation_symbols()
     return sp.ImmutableMatrix(sp.Matrix(so3_constraints(R)).jacobian(list(R)))
@@ -1040,7 +1055,8 @@ def constraint_jacobian_rank(point=None, tol=TOL):
     residual = float(np.linalg.norm(Pn.T @ Pn - np.eye(3)))
     if not residual <= tol:
         raise ValueError(
-            f"point is not orthogonal: ‖RᵀR − I‖ = {residual:.1e} > TOL = {tol:.0e}; "
+            f"point is not orthogonal: ‖RᵀR − I‖ = {fmt_residual(residual, tol)} > "
+            f"{tol_label(tol)}; "
             "the rank is only meaningful on SO(3)"
         )
     R = rotation_symbols()
@@ -1050,7 +1066,7 @@ def constraint_jacobian_rank(point=None, tol=TOL):
     return int(np.linalg.matrix_rank(np.array(J.evalf(), dtype=np.float64), tol=tol))
 
 
-@lru_cache(maxsize=None)
+@cache
 def solve_scalar_ode():
     r"""Solve :math:`\dot x(t) = a\,x(t)`, :math:`x(0) = x_0` with ``sp.dsolve`` (eqs. 95-106).
 

@@ -110,7 +110,7 @@ def test_rodrigues_readout_never_shows_negative_zero():
 
 
 def test_rodrigues_readout_refuses_batches_and_bad_decimals():
-    with pytest.raises(ValueError, match=r"single 3-vector"):
+    with pytest.raises(ValueError, match=r"axis must be one 3-vector of shape \(3,\)"):
         rodrigues_readout([[0, 0, 1], [1, 0, 0]], 1.0)
     with pytest.raises(ValueError, match="single angle"):
         rodrigues_readout([0, 0, 1], [1.0, 2.0])
@@ -118,7 +118,7 @@ def test_rodrigues_readout_refuses_batches_and_bad_decimals():
         rodrigues_readout([0, 0, 1], 1.0, decimals=9)
     with pytest.raises(TypeError, match="decimals must be an integer"):
         rodrigues_readout([0, 0, 1], 1.0, decimals=2.0)
-    with pytest.raises(ValueError, match="not a unit vector"):
+    with pytest.raises(ValueError, match=r"axis must be a unit vector: ‖axis‖ = 0\.5"):
         rodrigues_readout([0, 0, 0.5], 1.0)
 
 
@@ -233,7 +233,9 @@ def test_draw_rodrigues_terms_with_q0_on_the_axis_draws_no_circle():
 
 def test_draw_rodrigues_terms_refuses_bad_q0():
     fig, ax = plotting.axes3d("t")
-    with pytest.raises(ValueError, match=r"q0 must be a single 3-vector"):
+    with pytest.raises(
+        ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"
+    ):
         draw_rodrigues_terms(ax, 0.1, 0.2, 0.3, q0=np.zeros((2, 3)))
     with pytest.raises(ValueError, match="q0 contains NaN"):
         draw_rodrigues_terms(ax, 0.1, 0.2, 0.3, q0=(np.nan, 0, 0))
@@ -633,9 +635,11 @@ def test_explorer_refuses_initial_values_outside_the_sliders(make):
 
 
 def test_rodrigues_explorer_refuses_bad_q0():
-    with pytest.raises(ValueError, match="q0 must be a single 3-vector"):
+    with pytest.raises(
+        ValueError, match=r"q0 must be one 3-vector of shape \(3,\), got shape \(2, 3\)"
+    ):
         rodrigues_explorer(q0=np.zeros((2, 3)))
-    with pytest.raises(ValueError, match=r"q0 must have shape \(\.\.\., 3\)"):
+    with pytest.raises(ValueError, match=r"q0 must be one 3-vector .* got shape \(4,\)"):
         rodrigues_explorer(q0=[1.0, 2.0, 3.0, 4.0])
 
 
@@ -696,5 +700,5 @@ def test_spin_animation_refuses_bad_sizes():
         spin_animation(dpi=300)
     with pytest.raises(ValueError, match="size must be between 1 and 8"):
         spin_animation(size=20)
-    with pytest.raises(ValueError, match="axis must be non-zero"):
+    with pytest.raises(ValueError, match="axis must be non-zero to define a direction"):
         spin_animation(axis=(0, 0, 0))

@@ -23,9 +23,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-from tools import sync_exercises  # noqa: E402
-
 from course_lib.exercises import exercises  # noqa: E402
+from tools import sync_exercises  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 NBGRADER = Path(sys.executable).with_name("nbgrader")
@@ -34,8 +33,9 @@ CHAPTERS = sorted((ROOT / "notebooks").glob("0[1-9]_*.ipynb"))
 
 def run(args, cwd):
     env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ.get('PATH', '')}"}
-    proc = subprocess.run([str(NBGRADER), *args], cwd=cwd, capture_output=True, text=True,
-                          timeout=300, env=env)          # nbgrader runs `alembic` from PATH
+    proc = subprocess.run(
+        [str(NBGRADER), *args], cwd=cwd, capture_output=True, text=True, timeout=300, env=env
+    )  # nbgrader runs `alembic` from PATH
     return proc.returncode, proc.stdout + proc.stderr
 
 
@@ -46,7 +46,8 @@ def course(tmp_path_factory):
         "c = get_config()\n"
         f"c.CourseDirectory.root = {str(root)!r}\n"
         "c.CourseDirectory.course_id = 'rotations'\n"
-        "c.ExecutePreprocessor.timeout = 120\n")
+        "c.ExecutePreprocessor.timeout = 120\n"
+    )
     chapters = root / "source" / "chapters"
     chapters.mkdir(parents=True)
     for path in CHAPTERS:
@@ -55,13 +56,18 @@ def course(tmp_path_factory):
     sections.mkdir(parents=True)
     for chapter in (1, 2, 3, 4):
         nb = sync_exercises.sync(nbformat.v4.new_notebook(), chapter)
-        nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                     "language": "python"}
-        if chapter == 1:                           # an instructor's hidden test
+        nb.metadata["kernelspec"] = {
+            "name": "python3",
+            "display_name": "Python 3",
+            "language": "python",
+        }
+        if chapter == 1:  # an instructor's hidden test
             cell = next(c for c in nb.cells if c.id == "coords_by_projection-check")
-            cell.source += ("\n### BEGIN HIDDEN TESTS\n"
-                            "assert check('coords_by_projection', answer_coords_by_projection)\n"
-                            "### END HIDDEN TESTS")
+            cell.source += (
+                "\n### BEGIN HIDDEN TESTS\n"
+                "assert check('coords_by_projection', answer_coords_by_projection)\n"
+                "### END HIDDEN TESTS"
+            )
         nbformat.write(nb, sections / f"{chapter:02d}_exercises.ipynb")
     return root
 
@@ -78,6 +84,7 @@ def test_generate_assignment_accepts_every_chapter_notebook(course):
 
 def _scores(course, student):
     from nbgrader.api import Gradebook
+
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
         sub = gb.find_submission("exercises", student)
         return sub.score, sub.max_score
@@ -114,8 +121,9 @@ def test_autograde_gives_the_instructor_full_marks_and_a_blank_copy_zero(graded)
 
 
 def test_autograded_check_cells_show_the_verdict_and_the_hint(graded):
-    nb = json.loads((graded / "autograded" / "blank" / "exercises" /
-                     "03_exercises.ipynb").read_text())
+    nb = json.loads(
+        (graded / "autograded" / "blank" / "exercises" / "03_exercises.ipynb").read_text()
+    )
     checks = [c for c in nb["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade")]
     assert len(checks) == len(exercises(3))
     for cell in checks:

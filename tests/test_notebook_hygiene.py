@@ -7,7 +7,6 @@ the tool itself on small notebooks.
 
 import base64
 import io
-import json
 import re
 import subprocess
 import sys
@@ -23,6 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tools"))
 
 import course_links  # noqa: E402
+
 import notebooks as nbtool  # noqa: E402
 
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb"))
@@ -89,14 +89,19 @@ def test_pngs_are_palette_coded(chapter):
     for i, output in _outputs(nb):
         if "image/png" in output.get("data", {}):
             image = Image.open(io.BytesIO(base64.b64decode(output["data"]["image/png"])))
-            assert image.mode == "P", f"{chapter.name} cell {i}: {image.mode} PNG, run `make notebooks`"
+            assert image.mode == "P", (
+                f"{chapter.name} cell {i}: {image.mode} PNG, run `make notebooks`"
+            )
 
 
 def test_cleaning_the_committed_notebooks_changes_nothing(chapter):
     text = chapter.read_text(encoding="utf-8")
     nb = nbformat.reads(text, as_version=4)
     nbformat.validate(nb)
-    assert nbtool.text_of(nbtool.clean(nbtool.put_setup_cell(nb, course_links.repository_url()))) == text
+    assert (
+        nbtool.text_of(nbtool.clean(nbtool.put_setup_cell(nb, course_links.repository_url())))
+        == text
+    )
 
 
 def test_all_chapters_together_are_small():
@@ -111,7 +116,9 @@ def test_all_chapters_together_are_small():
 
 def test_readme_launch_links_follow_pyproject():
     text = (ROOT / "README.md").read_text(encoding="utf-8")
-    block = re.search(re.escape(course_links.BEGIN) + ".*?" + re.escape(course_links.END), text, re.S)
+    block = re.search(
+        re.escape(course_links.BEGIN) + ".*?" + re.escape(course_links.END), text, re.S
+    )
     assert block, "README.md has no launch-links block"
     names = [p.name for p in CHAPTERS]
     assert block.group(0) == course_links.readme_block(course_links.repository_url(), names)
@@ -125,13 +132,16 @@ def test_unset_url_says_so_instead_of_pointing_nowhere():
 def test_links_of_a_github_repository_open_the_student_edition():
     url = "https://github.com/example/rotations-course"
     assert course_links.binder_url(url) == (
-        "https://mybinder.org/v2/gh/example/rotations-course/student?urlpath=lab/tree/notebooks")
+        "https://mybinder.org/v2/gh/example/rotations-course/student?urlpath=lab/tree/notebooks"
+    )
     assert course_links.colab_url(url + ".git", "01_a.ipynb") == (
-        "https://colab.research.google.com/github/example/rotations-course/blob/student/notebooks/01_a.ipynb")
+        "https://colab.research.google.com/github/example/rotations-course/blob/student/notebooks/01_a.ipynb"
+    )
     assert "branch=student" in course_links.nbgitpuller_url(url)
     assert course_links.colab_url("https://gitlab.com/example/course", "01_a.ipynb") is None
     assert course_links.binder_url("https://gitlab.com/example/course").startswith(
-        "https://mybinder.org/v2/git/https%3A%2F%2Fgitlab.com%2Fexample%2Fcourse/student")
+        "https://mybinder.org/v2/git/https%3A%2F%2Fgitlab.com%2Fexample%2Fcourse/student"
+    )
 
 
 def test_repository_url_must_be_https(tmp_path):
@@ -142,7 +152,9 @@ def test_repository_url_must_be_https(tmp_path):
 
 
 def test_python310_fallback_reads_project_urls():
-    text = '[project]\nname = "x"\n\n[project.urls]\nRepository = "https://h/x"\n\n[tool.y]\nz = "1"\n'
+    text = (
+        '[project]\nname = "x"\n\n[project.urls]\nRepository = "https://h/x"\n\n[tool.y]\nz = "1"\n'
+    )
     assert course_links._project_urls(text) == {"Repository": "https://h/x"}
 
 
@@ -158,11 +170,26 @@ def test_binder_uses_python_311_and_installs_the_course_editable():
 
 def test_not_notebook_exec_deselects_every_notebook_cell():
     """Regression: `-m 'not notebook_exec'` used to keep all nbval cells (3 of 920 deselected)."""
-    run = subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q",
-                          "-m", "not notebook_exec", "notebooks"],
-                         cwd=ROOT, capture_output=True, text=True, timeout=120)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "--collect-only",
+            "-q",
+            "-m",
+            "not notebook_exec",
+            "notebooks",
+        ],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert ".ipynb::" not in run.stdout
-    assert re.search(r"no tests collected \(\d+ deselected\)|0 selected", run.stdout), run.stdout[-300:]
+    assert re.search(r"no tests collected \(\d+ deselected\)|0 selected", run.stdout), run.stdout[
+        -300:
+    ]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -182,8 +209,11 @@ def _run_setup(url, monkeypatch, cwd, importable):
     import importlib.util
 
     real = importlib.util.find_spec
-    monkeypatch.setattr(importlib.util, "find_spec",
-                        lambda name, *a: real(name, *a) if importable or name != "course_lib" else None)
+    monkeypatch.setattr(
+        importlib.util,
+        "find_spec",
+        lambda name, *a: real(name, *a) if importable or name != "course_lib" else None,
+    )
     monkeypatch.setattr(sys, "path", list(sys.path))
     monkeypatch.chdir(cwd)
     shell = _Shell()
@@ -243,7 +273,8 @@ def test_small_png_is_smaller_looks_the_same_and_is_stable():
 
 
 def test_animation_ids_are_deterministic_and_distinct_per_cell():
-    html = 'new Animation(frames, "0123456789abcdef0123456789abcdef"); id="0123456789abcdef0123456789abcdef"'
+    uid = "0123456789abcdef0123456789abcdef"
+    html = f'new Animation(frames, "{uid}"); id="{uid}"'
     a = nbtool._stable_ids(html, "cell-a")
     assert a == nbtool._stable_ids(html, "cell-a") != nbtool._stable_ids(html, "cell-b")
     assert len(set(re.findall("[0-9a-f]{32}", a))) == 1
@@ -252,7 +283,7 @@ def test_animation_ids_are_deterministic_and_distinct_per_cell():
 def test_put_setup_cell_replaces_an_old_copy():
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("# Title")])
     nbtool.put_setup_cell(nb, None)
-    nb.cells.append(nb.cells.pop(0))           # an old copy, moved to the end
+    nb.cells.append(nb.cells.pop(0))  # an old copy, moved to the end
     nb.cells[-1].source = "# an older setup cell"
     nbtool.put_setup_cell(nb, "https://github.com/example/c")
     assert [c.get("id") for c in nb.cells].count(nbtool.SETUP_ID) == 1
@@ -262,8 +293,15 @@ def test_put_setup_cell_replaces_an_old_copy():
 def test_clean_strips_widget_state_timestamps_and_model_ids():
     cell = nbformat.v4.new_code_cell("w")
     cell.metadata["execution"] = {"iopub.status.idle": "2026-01-01T00:00:00Z"}
-    cell.outputs = [nbformat.v4.new_output("execute_result", data={
-        nbtool.WIDGET_VIEW: {"model_id": "3cb279597a744bb5", "version_major": 2}, "text/plain": "w"})]
+    cell.outputs = [
+        nbformat.v4.new_output(
+            "execute_result",
+            data={
+                nbtool.WIDGET_VIEW: {"model_id": "3cb279597a744bb5", "version_major": 2},
+                "text/plain": "w",
+            },
+        )
+    ]
     nb = nbformat.v4.new_notebook(cells=[cell], metadata={"widgets": {"state": {}}})
     nbtool.clean(nb)
     assert "widgets" not in nb.metadata and "execution" not in cell.metadata
@@ -275,9 +313,16 @@ def test_widget_cells_do_not_stall_the_executor(tmp_path):
     """Regression: nbclient's Output-widget mimic made the cell after a slider wait 300 s."""
     cells = [nbformat.v4.new_code_cell("from course_lib.interactive import rodrigues_explorer")]
     for _ in range(8):
-        cells += [nbformat.v4.new_code_cell("rodrigues_explorer()"), nbformat.v4.new_code_cell("1 + 1")]
+        cells += [
+            nbformat.v4.new_code_cell("rodrigues_explorer()"),
+            nbformat.v4.new_code_cell("1 + 1"),
+        ]
     nb = nbformat.v4.new_notebook(cells=cells)
-    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
     seconds = nbtool.execute(nb, tmp_path)
     assert seconds < 60
     assert nb.cells[-1].outputs[0]["data"]["text/plain"] == "2"
@@ -294,4 +339,6 @@ def test_a_rerun_changes_nothing(tmp_path):
     copy.write_bytes(smallest.read_bytes())
     new, old, seconds = nbtool.process(copy, course_links.repository_url())
     assert seconds < 60
-    assert new == old, "re-executing changed the notebook: run `make notebooks` and look at the diff"
+    assert new == old, (
+        "re-executing changed the notebook: run `make notebooks` and look at the diff"
+    )

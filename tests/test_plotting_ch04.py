@@ -37,16 +37,24 @@ def _texts(ax):
 
 # frame_panels ---------------------------------------------------------------------------------
 
+
 def test_frame_panels_draws_each_item_in_its_panel():
     R = so3.rot_z(np.pi / 2)
-    fig, axes, drawn = frame_panels([
-        {"title": "one", "frames": [{"label": "A"}, {"R": R, "label": "B", "scale": 0.5}],
-         "vectors": [{"v": [0, 0, 1], "label": "$v$"}], "axis": {"direction": [0, 0, 2]}},
-        {"title": "two", "boxes": [{"R": R}]}])
+    fig, axes, drawn = frame_panels(
+        [
+            {
+                "title": "one",
+                "frames": [{"label": "A"}, {"R": R, "label": "B", "scale": 0.5}],
+                "vectors": [{"v": [0, 0, 1], "label": "$v$"}],
+                "axis": {"direction": [0, 0, 2]},
+            },
+            {"title": "two", "boxes": [{"R": R}]},
+        ]
+    )
     assert [a.get_title() for a in axes] == ["one", "two"]
     assert [d.kind for d in drawn[0]] == ["frame", "frame", "vector", "axis"]
-    assert np.allclose(drawn[0][1].points, 0.5 * R.T)          # tips o + s R e_i
-    assert np.allclose(drawn[0][3].points, [[0, 0, -1.2], [0, 0, 1.2]])   # unit axis, ±1.2
+    assert np.allclose(drawn[0][1].points, 0.5 * R.T)  # tips o + s R e_i
+    assert np.allclose(drawn[0][3].points, [[0, 0, -1.2], [0, 0, 1.2]])  # unit axis, ±1.2
     assert [d.kind for d in drawn[1]] == ["box"]
     assert "$B$" in _texts(axes[0]) and "$v$" in _texts(axes[0])
 
@@ -54,9 +62,9 @@ def test_frame_panels_draws_each_item_in_its_panel():
 def test_frame_panels_name_false_leaves_out_only_the_name():
     fig, axes, drawn = frame_panels([{"title": "t", "frames": [{"label": "B", "name": False}]}])
     texts = _texts(axes[0])
-    assert "$B$" not in texts                                    # no name at the origin
-    assert {"$x_{B}$", "$y_{B}$", "$z_{B}$"} <= set(texts)       # the axis labels stay
-    assert len(drawn[0][0].artists) == 6                         # 3 arrows + 3 labels
+    assert "$B$" not in texts  # no name at the origin
+    assert {"$x_{B}$", "$y_{B}$", "$z_{B}$"} <= set(texts)  # the axis labels stay
+    assert len(drawn[0][0].artists) == 6  # 3 arrows + 3 labels
 
 
 def _position(text):
@@ -66,16 +74,24 @@ def _position(text):
 def test_frame_panels_labels_beside_keeps_labels_off_a_shared_axis():
     # regression: the short frame before a turn about z wrote z_B on the longer z_B' arrow
     R = so3.rot_y(np.pi / 4)
-    fig, axes, drawn = frame_panels([{"title": "t", "frames": [
-        {"R": R, "label": "B", "scale": 0.6, "labels": "beside"},
-        {"R": R @ so3.rot_z(np.pi / 2), "label": "C"}]}])
+    fig, axes, drawn = frame_panels(
+        [
+            {
+                "title": "t",
+                "frames": [
+                    {"R": R, "label": "B", "scale": 0.6, "labels": "beside"},
+                    {"R": R @ so3.rot_z(np.pi / 2), "label": "C"},
+                ],
+            }
+        ]
+    )
     frame = drawn[0][0]
     labels = [a for a in frame.artists if hasattr(a, "get_text")][:3]
     for tip, text in zip(frame.points, labels):
         step = _position(text) - tip
         axis = (tip - frame.origin) / np.linalg.norm(tip - frame.origin)
-        assert np.linalg.norm(step) > 0.01                       # moved away from the tip
-        assert abs(step @ axis) < 1e-12                          # sideways, not along the arrow
+        assert np.linalg.norm(step) > 0.01  # moved away from the tip
+        assert abs(step @ axis) < 1e-12  # sideways, not along the arrow
 
 
 def test_frame_panels_rejects_unknown_label_placement():
@@ -83,21 +99,25 @@ def test_frame_panels_rejects_unknown_label_placement():
         frame_panels([{"title": "t", "frames": [{"labels": "middle"}]}])
 
 
-@pytest.mark.parametrize("panels, error", [
-    (["not a dict"], TypeError),
-    ([{"frames": []}], TypeError),                               # no title
-    ([{"title": "t", "colour": "red"}], ValueError),             # unknown key
-    ([{"title": "t", "frames": [np.eye(3)]}], TypeError),        # item is not a dict
-    ([{"title": "t", "frames": [{"R": np.eye(3), "size": 2}]}], TypeError),
-    ([{"title": "t", "boxes": [{"R": np.diag([1.0, 1.0, -1.0])}]}], ValueError),   # reflection
-    ([{"title": "t", "axis": {"direction": [0, 0, 0]}}], ValueError),
-])
+@pytest.mark.parametrize(
+    "panels, error",
+    [
+        (["not a dict"], TypeError),
+        ([{"frames": []}], TypeError),  # no title
+        ([{"title": "t", "colour": "red"}], ValueError),  # unknown key
+        ([{"title": "t", "frames": [np.eye(3)]}], TypeError),  # item is not a dict
+        ([{"title": "t", "frames": [{"R": np.eye(3), "size": 2}]}], TypeError),
+        ([{"title": "t", "boxes": [{"R": np.diag([1.0, 1.0, -1.0])}]}], ValueError),  # reflection
+        ([{"title": "t", "axis": {"direction": [0, 0, 0]}}], ValueError),
+    ],
+)
 def test_frame_panels_rejects_bad_panels(panels, error):
     with pytest.raises(error):
         frame_panels(panels)
 
 
 # plot_error_curves ----------------------------------------------------------------------------
+
 
 def test_error_curves_are_log_log_and_floor_exact_zeros():
     x = np.logspace(-1, -6, 6)
@@ -109,19 +129,23 @@ def test_error_curves_are_log_log_and_floor_exact_zeros():
     assert np.all(lines["zero"].get_ydata() == 1e-18)
 
 
-@pytest.mark.parametrize("x, curves, error", [
-    ([1.0, 0.0], {"a": [1.0, 1.0]}, ValueError),                 # x not positive
-    ([1.0, 0.1], [1.0, 1.0], TypeError),                         # curves not a dict
-    ([1.0, 0.1], {"a": [1.0, -1.0]}, ValueError),                # negative error
-    ([1.0, 0.1], {"a": [1.0, np.nan]}, ValueError),
-    ([1.0, 0.1], {"a": [1.0, 1.0, 1.0]}, ValueError),            # shapes differ
-])
+@pytest.mark.parametrize(
+    "x, curves, error",
+    [
+        ([1.0, 0.0], {"a": [1.0, 1.0]}, ValueError),  # x not positive
+        ([1.0, 0.1], [1.0, 1.0], TypeError),  # curves not a dict
+        ([1.0, 0.1], {"a": [1.0, -1.0]}, ValueError),  # negative error
+        ([1.0, 0.1], {"a": [1.0, np.nan]}, ValueError),
+        ([1.0, 0.1], {"a": [1.0, 1.0, 1.0]}, ValueError),  # shapes differ
+    ],
+)
 def test_error_curves_reject_bad_input(x, curves, error):
     with pytest.raises(error):
         plot_error_curves(x, curves, "t", "x")
 
 
 # plot_geodesic --------------------------------------------------------------------------------
+
 
 @FAST
 @given(st.integers(0, 2**31 - 1))
@@ -138,10 +162,11 @@ def test_geodesic_runs_at_constant_speed_from_R0_to_R1(seed):
 
 def test_geodesic_draws_three_tip_paths_and_the_frames_between():
     fig, ax, path = plot_geodesic(np.eye(3), so3.rot_x(1.0), steps=4, samples=5)
-    assert len(ax.get_lines()) == 3                              # one tip path per axis
-    arrows = [a for a in ax.artists if isinstance(a, Arrow)] + \
-        [p for p in ax.patches if isinstance(p, Arrow)]
-    assert len(arrows) == 3 * (4 - 1) + 6                        # 3 frames between, plus 2 ends
+    assert len(ax.get_lines()) == 3  # one tip path per axis
+    arrows = [a for a in ax.artists if isinstance(a, Arrow)] + [
+        p for p in ax.patches if isinstance(p, Arrow)
+    ]
+    assert len(arrows) == 3 * (4 - 1) + 6  # 3 frames between, plus 2 ends
     assert {"$x_{0}$", "$x_{1}$"} <= set(_texts(ax)) and "$0$" not in _texts(ax)
 
 
@@ -154,19 +179,19 @@ def test_geodesic_rejects_non_rotations():
 
 # plot_rodrigues_circle ------------------------------------------------------------------------
 
+
 @FAST
 @given(st.integers(0, 2**31 - 1), st.floats(-2 * np.pi, 2 * np.pi))
 def test_rodrigues_parts_rebuild_the_rotated_point(seed, th):
     w = so3.random_rotations(1, seed=seed)[0, :, 0]
     q = np.array([0.7, -0.4, 0.5])
-    assume(np.linalg.norm(np.cross(w, q)) > 1e-3)               # q off the axis
+    assume(np.linalg.norm(np.cross(w, q)) > 1e-3)  # q off the axis
     fig, ax, parts = plot_rodrigues_circle(w, q, th)
     plt.close(fig)
     geometric = parts["q_par"] + np.cos(th) * parts["q_perp"] + np.sin(th) * parts["w_x_q"]
     assert np.allclose(parts["Rq"], geometric, atol=1e-12)
     assert abs(parts["q_perp"] @ w) < 1e-12
-    assert np.isclose(np.linalg.norm(parts["Rq"] - parts["q_par"]),
-                      np.linalg.norm(parts["q_perp"]))
+    assert np.isclose(np.linalg.norm(parts["Rq"] - parts["q_par"]), np.linalg.norm(parts["q_perp"]))
 
 
 def test_rodrigues_circle_is_drawn_about_the_axis():
@@ -185,10 +210,15 @@ def test_rodrigues_circle_labels_q_perp_apart_from_q():
     assert np.linalg.norm(where[r"$q_\parallel$"] - parts["q_par"]) > 0.05
 
 
-@pytest.mark.parametrize("w, q", [([0, 0, 2], [1, 0, 0]),       # not a unit axis
-                                  ([0, 0, 1], [0, 0, 0.7]),      # q on the axis
-                                  ([0, 0, 1], [1, 0]),           # wrong shape
-                                  ([0, 0, 1], [np.inf, 0, 0])])
+@pytest.mark.parametrize(
+    "w, q",
+    [
+        ([0, 0, 2], [1, 0, 0]),  # not a unit axis
+        ([0, 0, 1], [0, 0, 0.7]),  # q on the axis
+        ([0, 0, 1], [1, 0]),  # wrong shape
+        ([0, 0, 1], [np.inf, 0, 0]),
+    ],
+)
 def test_rodrigues_circle_rejects_bad_input(w, q):
     with pytest.raises(ValueError):
         plot_rodrigues_circle(w, q, 1.0)

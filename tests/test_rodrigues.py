@@ -142,7 +142,8 @@ def test_rodrigues_terms_batch_shapes_broadcast():
 
 def test_rodrigues_terms_refuses_non_unit_axis_instead_of_returning_a_wrong_sum():
     with pytest.raises(
-        ValueError, match=r"axis is not a unit vector: ‖axis‖ = 2, .* > TOL = 1e-09"
+        ValueError,
+        match=r"axis must be a unit vector: ‖axis‖ = 2, .* > TOL = 1e-09; divide it by its norm",
     ):
         rodrigues_terms([0, 0, 2], 1.0)
     with pytest.raises(ValueError, match=r"at batch index \(1,\)"):
@@ -221,7 +222,9 @@ def test_spin_rotations_turn_one_radian_per_second(axis, t):
 
 
 def test_spin_rotations_refuses_a_zero_axis():
-    with pytest.raises(ValueError, match=r"axis must be non-zero .* ‖axis‖ = 0.0e\+00 <= TOL"):
+    with pytest.raises(
+        ValueError, match=r"axis must be non-zero .* ‖axis‖ = 0\.0e\+00 ≤ TOL = 1e-09"
+    ):
         spin_rotations([0, 0, 0], 1.0)
-    with pytest.raises(ValueError, match="single 3-vector"):
+    with pytest.raises(ValueError, match=r"axis must be one 3-vector of shape \(3,\)"):
         spin_rotations([[0, 0, 1]], 1.0)

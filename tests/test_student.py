@@ -20,27 +20,43 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from jupyter_client.manager import start_new_kernel
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output, new_raw_cell
 
 from course_lib import student as student_module
 from course_lib.student import (
-    CELL_RUN_STATE, CODE_STUB, MARKDOWN_STUB, StudentNotebookError, main,
-    make_student_notebooks, student_notebook,
+    CELL_RUN_STATE,
+    CODE_STUB,
+    MARKDOWN_STUB,
+    StudentNotebookError,
+    main,
+    make_student_notebooks,
+    student_notebook,
 )
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
 KERNELSPEC = {"name": "python3", "display_name": "Python 3", "language": "python"}
 PNG = base64.b64encode(b"\x89PNG\r\n\x1a\n solution figure").decode()
-WIDGET_STATE = {"application/vnd.jupyter.widget-state+json": {
-    "state": {"abc": {"model_name": "ImageModel", "state": {"value": PNG}}},
-    "version_major": 2, "version_minor": 0}}
+WIDGET_STATE = {
+    "application/vnd.jupyter.widget-state+json": {
+        "state": {"abc": {"model_name": "ImageModel", "state": {"value": PNG}}},
+        "version_major": 2,
+        "version_minor": 0,
+    }
+}
 
 
 def nbgrader(grade_id, solution=True, grade=False, task=False, points=None):
-    meta = {"grade": grade, "grade_id": grade_id, "locked": not solution,
-            "schema_version": 3, "solution": solution, "task": task}
+    meta = {
+        "grade": grade,
+        "grade_id": grade_id,
+        "locked": not solution,
+        "schema_version": 3,
+        "solution": solution,
+        "task": task,
+    }
     if points is not None:
         meta["points"] = points
     return {"nbgrader": meta}
@@ -48,9 +64,10 @@ def nbgrader(grade_id, solution=True, grade=False, task=False, points=None):
 
 def executed(cell, count):
     cell.execution_count = count
-    cell.outputs = [new_output("stream", name="stdout", text="solution output 42\n"),
-                    new_output("execute_result", data={"text/plain": "'secret'"},
-                               execution_count=count)]
+    cell.outputs = [
+        new_output("stream", name="stdout", text="solution output 42\n"),
+        new_output("execute_result", data={"text/plain": "'secret'"}, execution_count=count),
+    ]
     cell.metadata["execution"] = {"iopub.status.busy": "2026-01-01T00:00:00.000Z"}
     cell.metadata["scrolled"] = True
     return cell
@@ -61,21 +78,29 @@ def synthetic_notebook():
     cells = [
         new_markdown_cell("# Chapter\nIntro text."),
         executed(new_code_cell("import math\nfrom course_lib.exercises import check"), 1),
-        executed(new_code_cell(
-            "answer_hat_squared = None\n"
-            "### BEGIN SOLUTION\n"
-            "answer_hat_squared = SECRET_ONE\n"
-            "helper = SECRET_TWO\n"
-            "### END SOLUTION\n"
-            "print('after the region')",
-            metadata=nbgrader("hat-squared-solution")), 2),
-        executed(new_code_cell(
-            'result = check("hat_squared", answer_hat_squared)\n'
-            "assert result.ok, result.message\n"
-            "### BEGIN HIDDEN TESTS\n"
-            "assert SECRET_HIDDEN\n"
-            "### END HIDDEN TESTS",
-            metadata=nbgrader("hat-squared-check", solution=False, grade=True, points=2)), 3),
+        executed(
+            new_code_cell(
+                "answer_hat_squared = None\n"
+                "### BEGIN SOLUTION\n"
+                "answer_hat_squared = SECRET_ONE\n"
+                "helper = SECRET_TWO\n"
+                "### END SOLUTION\n"
+                "print('after the region')",
+                metadata=nbgrader("hat-squared-solution"),
+            ),
+            2,
+        ),
+        executed(
+            new_code_cell(
+                'result = check("hat_squared", answer_hat_squared)\n'
+                "assert result.ok, result.message\n"
+                "### BEGIN HIDDEN TESTS\n"
+                "assert SECRET_HIDDEN\n"
+                "### END HIDDEN TESTS",
+                metadata=nbgrader("hat-squared-check", solution=False, grade=True, points=2),
+            ),
+            3,
+        ),
         new_code_cell(
             "def f(v):\n"
             "    total = 0\n"
@@ -88,22 +113,29 @@ def synthetic_notebook():
             "# BEGIN SOLUTION\n"
             "answer_va_example = SECRET_FOUR\n"
             "# END SOLUTION",
-            metadata=nbgrader("two-regions")),
+            metadata=nbgrader("two-regions"),
+        ),
         new_markdown_cell(
             "Explain why, with a sketch:\n\n### BEGIN SOLUTION\nBecause SECRET_FIVE.\n"
             "![sketch](attachment:solution.png)\n### END SOLUTION\n\n"
             "![given](attachment:given.png)\nEnd.",
             metadata=nbgrader("written-answer", grade=True, points=1),
-            attachments={"solution.png": {"image/png": PNG},
-                         "given.png": {"image/png": "R0lGODlh"}}),
+            attachments={
+                "solution.png": {"image/png": PNG},
+                "given.png": {"image/png": "R0lGODlh"},
+            },
+        ),
         new_code_cell("answer_rodrigues = SECRET_SIX", metadata=nbgrader("whole-cell")),
-        new_markdown_cell("A figure the students need:\n![axes](attachment:axes.png)",
-                          attachments={"axes.png": {"image/png": "R0lGODlh"}}),
+        new_markdown_cell(
+            "A figure the students need:\n![axes](attachment:axes.png)",
+            attachments={"axes.png": {"image/png": "R0lGODlh"}},
+        ),
         new_raw_cell("raw text stays"),
     ]
-    return new_notebook(cells=cells, metadata={"kernelspec": KERNELSPEC,
-                                               "custom": {"keep": [1, 2, 3]},
-                                               "widgets": WIDGET_STATE})
+    return new_notebook(
+        cells=cells,
+        metadata={"kernelspec": KERNELSPEC, "custom": {"keep": [1, 2, 3]}, "widgets": WIDGET_STATE},
+    )
 
 
 def write(nb, path):
@@ -114,8 +146,9 @@ def write(nb, path):
 
 def snapshot(directory):
     """Every file under ``directory`` with its bytes (and the directories, to see leftovers)."""
-    return {p: (p.read_bytes() if p.is_file() else None)
-            for p in sorted(Path(directory).rglob("*"))}
+    return {
+        p: (p.read_bytes() if p.is_file() else None) for p in sorted(Path(directory).rglob("*"))
+    }
 
 
 def without_run_state(metadata):
@@ -134,6 +167,7 @@ def src(tmp_path):
 
 # --------------------------------------------------------------------------------- conversion
 
+
 def test_marked_regions_become_stubs_and_everything_else_is_kept(src, tmp_path):
     original = nbformat.read(src / "a_chapter.ipynb", as_version=4)
     written = make_student_notebooks(src, tmp_path / "out")
@@ -149,20 +183,24 @@ def test_marked_regions_become_stubs_and_everything_else_is_kept(src, tmp_path):
             assert new.outputs == [] and new.execution_count is None
 
     code = student.cells[2].source.split("\n")
-    assert code == ["answer_hat_squared = None", CODE_STUB,
-                    "raise NotImplementedError(\"write your solution to exercise "
-                    "'hat_squared' here\")",
-                    "print('after the region')"]
-    assert student.cells[3].source == ('result = check("hat_squared", answer_hat_squared)\n'
-                                       "assert result.ok, result.message")
+    assert code == [
+        "answer_hat_squared = None",
+        CODE_STUB,
+        "raise NotImplementedError(\"write your solution to exercise 'hat_squared' here\")",
+        "print('after the region')",
+    ]
+    assert student.cells[3].source == (
+        'result = check("hat_squared", answer_hat_squared)\nassert result.ok, result.message'
+    )
     two = student.cells[4].source.split("\n")
     assert two[:3] == ["def f(v):", "    total = 0", "    " + CODE_STUB]
     assert two[3].startswith("    raise NotImplementedError(")
     assert two[4:7] == ["    return total", "", "answer_va_example = None"]
     assert two[7] == CODE_STUB and two[8].startswith("raise NotImplementedError(")
-    assert student.cells[5].source == (f"Explain why, with a sketch:\n\n{MARKDOWN_STUB}\n\n"
-                                       "![given](attachment:given.png)\nEnd.")
-    assert list(student.cells[5].attachments) == ["given.png"]   # the solution's image is gone
+    assert student.cells[5].source == (
+        f"Explain why, with a sketch:\n\n{MARKDOWN_STUB}\n\n![given](attachment:given.png)\nEnd."
+    )
+    assert list(student.cells[5].attachments) == ["given.png"]  # the solution's image is gone
     whole = student.cells[6].source
     assert whole.startswith(CODE_STUB) and "NotImplementedError" in whole
     for i in (0, 1, 7, 8):
@@ -178,7 +216,7 @@ def test_stubs_compile_and_raise_not_implemented_error():
     namespace = {}
     with pytest.raises(NotImplementedError, match="hat_squared"):
         exec(student.cells[2].source, namespace)
-    assert namespace["answer_hat_squared"] is None     # assigned before the raise
+    assert namespace["answer_hat_squared"] is None  # assigned before the raise
     compile(student.cells[4].source, "<cell>", "exec")
 
 
@@ -199,35 +237,44 @@ def test_sources_are_untouched(src, tmp_path):
 def test_checkpoints_are_skipped_and_no_staging_folder_is_left(src, tmp_path):
     make_student_notebooks(src, tmp_path / "out")
     make_student_notebooks(src, tmp_path / "out", force=True)
-    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["a_chapter.ipynb",
-                                                                     "b_plain.ipynb"]
+    assert sorted(p.name for p in (tmp_path / "out").iterdir()) == [
+        "a_chapter.ipynb",
+        "b_plain.ipynb",
+    ]
 
 
 # --------------------------------------------------------------------------------- nbgrader's rule
+
 
 def one_cell(cell):
     return new_notebook(cells=[cell], metadata={"kernelspec": KERNELSPEC})
 
 
-@pytest.mark.parametrize("cell", [
-    new_markdown_cell("Write your answer between `### BEGIN SOLUTION` and `### END SOLUTION`."),
-    new_code_cell("x = 1  # the BEGIN SOLUTION marker opens a region"),
-    new_raw_cell("BEGIN SOLUTIONS are marked like this"),
-], ids=["markdown-prose", "code-comment", "raw-longer-word"])
+@pytest.mark.parametrize(
+    "cell",
+    [
+        new_markdown_cell("Write your answer between `### BEGIN SOLUTION` and `### END SOLUTION`."),
+        new_code_cell("x = 1  # the BEGIN SOLUTION marker opens a region"),
+        new_raw_cell("BEGIN SOLUTIONS are marked like this"),
+    ],
+    ids=["markdown-prose", "code-comment", "raw-longer-word"],
+)
 def test_a_marker_word_anywhere_in_a_line_is_a_marker_as_for_nbgrader(cell):
     with pytest.raises(StudentNotebookError, match="for a marker, even in prose"):
         student_notebook(one_cell(cell))
 
 
-@pytest.mark.parametrize("text", ["begin solution (lower case)", "BEGIN  SOLUTION (two spaces)",
-                                  "BEGIN_SOLUTION"])
+@pytest.mark.parametrize(
+    "text", ["begin solution (lower case)", "BEGIN  SOLUTION (two spaces)", "BEGIN_SOLUTION"]
+)
 def test_near_misses_are_not_markers(text):
     assert student_notebook(one_cell(new_markdown_cell(text))).cells[0].source == text
 
 
 def test_a_marker_in_mid_line_of_a_solution_cell_opens_the_region_with_its_indent():
-    cell = new_code_cell("a = 1\n    x = 2  # BEGIN SOLUTION here\nsecret\nEND SOLUTION\nb",
-                         metadata=nbgrader("g"))
+    cell = new_code_cell(
+        "a = 1\n    x = 2  # BEGIN SOLUTION here\nsecret\nEND SOLUTION\nb", metadata=nbgrader("g")
+    )
     lines = student_notebook(one_cell(cell)).cells[0].source.split("\n")
     assert lines[0] == "a = 1" and lines[1] == "    " + CODE_STUB and lines[-1] == "b"
     assert "secret" not in lines and len(lines) == 4
@@ -255,11 +302,15 @@ def test_other_kernel_languages_are_refused():
 # exercise) or refuse where it refuses; the only case where ours alone refuses is a closing
 # marker outside a region, which nbgrader deletes without a word.
 
+
 def nbgrader_release(nb):
     preprocessors = pytest.importorskip("nbgrader.preprocessors")
     nb, resources = copy.deepcopy(nb), {}
-    for cls in (preprocessors.ClearSolutions, preprocessors.ClearHiddenTests,
-                preprocessors.ClearMarkScheme):
+    for cls in (
+        preprocessors.ClearSolutions,
+        preprocessors.ClearHiddenTests,
+        preprocessors.ClearMarkScheme,
+    ):
         nb, resources = cls().preprocess(nb, resources)
     return nb
 
@@ -275,15 +326,18 @@ def assert_agrees_with_nbgrader(nb):
     try:
         ours = student_notebook(nb)
     except StudentNotebookError as err:
-        if theirs is not None:    # ours is stricter only about a stray closing marker ...
-            stray = re.search(r": cell (\d+) .*: END (?:SOLUTION|HIDDEN TESTS|MARK SCHEME) "
-                              r"without BEGIN .* at line (\d+)", str(err))
+        if theirs is not None:  # ours is stricter only about a stray closing marker ...
+            stray = re.search(
+                r": cell (\d+) .*: END (?:SOLUTION|HIDDEN TESTS|MARK SCHEME) "
+                r"without BEGIN .* at line (\d+)",
+                str(err),
+            )
             assert stray, err
             cell, line = int(stray.group(1)), int(stray.group(2))
             without = copy.deepcopy(nb)
             lines = without.cells[cell].source.split("\n")
-            without.cells[cell].source = "\n".join(lines[:line - 1] + lines[line:])
-            assert nbgrader_release(without) == theirs     # ... which nbgrader just deletes
+            without.cells[cell].source = "\n".join(lines[: line - 1] + lines[line:])
+            assert nbgrader_release(without) == theirs  # ... which nbgrader just deletes
         return "refused"
     assert theirs is not None, "nbgrader refuses a notebook that course_lib.student accepts"
     for mine, reference in zip(ours.cells, theirs.cells, strict=True):
@@ -291,27 +345,46 @@ def assert_agrees_with_nbgrader(nb):
     return "same"
 
 
-LINES = ["x = 1", "    y = 2", "\tz = 3", "", "answer_e = None", "### BEGIN SOLUTION",
-         "    # BEGIN SOLUTION", "### END SOLUTION", "  # END SOLUTION", "text BEGIN SOLUTION text",
-         "BEGIN SOLUTIONS", "begin solution", "BEGIN  SOLUTION", "### BEGIN HIDDEN TESTS",
-         "### END HIDDEN TESTS", "BEGIN MARK SCHEME", "END MARK SCHEME",
-         "BEGIN SOLUTION END SOLUTION", "## END HIDDEN TESTS and BEGIN SOLUTION"]
+LINES = [
+    "x = 1",
+    "    y = 2",
+    "\tz = 3",
+    "",
+    "answer_e = None",
+    "### BEGIN SOLUTION",
+    "    # BEGIN SOLUTION",
+    "### END SOLUTION",
+    "  # END SOLUTION",
+    "text BEGIN SOLUTION text",
+    "BEGIN SOLUTIONS",
+    "begin solution",
+    "BEGIN  SOLUTION",
+    "### BEGIN HIDDEN TESTS",
+    "### END HIDDEN TESTS",
+    "BEGIN MARK SCHEME",
+    "END MARK SCHEME",
+    "BEGIN SOLUTION END SOLUTION",
+    "## END HIDDEN TESTS and BEGIN SOLUTION",
+]
 
 
 @st.composite
 def graded_cells(draw, index):
     source = "\n".join(draw(st.lists(st.sampled_from(LINES), max_size=7)))
     kind = draw(st.sampled_from(["code", "markdown", "raw"]))
-    flags = draw(st.none() | st.fixed_dictionaries(
-        {"solution": st.booleans(), "grade": st.booleans(), "task": st.booleans()}))
+    flags = draw(
+        st.none()
+        | st.fixed_dictionaries(
+            {"solution": st.booleans(), "grade": st.booleans(), "task": st.booleans()}
+        )
+    )
     metadata = {} if flags is None else nbgrader(f"cell-{index}", **flags)
     make = {"code": new_code_cell, "markdown": new_markdown_cell, "raw": new_raw_cell}[kind]
     return make(source, metadata=metadata)
 
 
 @settings(max_examples=300)
-@given(st.integers(1, 3).flatmap(
-    lambda n: st.tuples(*[graded_cells(i) for i in range(n)])))
+@given(st.integers(1, 3).flatmap(lambda n: st.tuples(*[graded_cells(i) for i in range(n)])))
 def test_marker_rule_is_nbgraders_on_random_cells(cells):
     nb = new_notebook(cells=list(cells), metadata={"kernelspec": KERNELSPEC})
     assert_agrees_with_nbgrader(nb)
@@ -324,6 +397,7 @@ def test_marker_rule_is_nbgraders_on_the_synthetic_and_the_real_notebooks():
 
 
 # --------------------------------------------------------------------------------- refusals
+
 
 def test_out_dir_equal_to_or_inside_src_is_refused(src):
     before = snapshot(src)
@@ -371,8 +445,7 @@ def test_issue_reproduction_hard_link_to_a_source_with_force(src, tmp_path, caps
     assert sorted(p.name for p in out.iterdir()) == ["a_chapter.ipynb"]
 
 
-def test_force_replaces_a_hard_link_to_a_file_outside_src_without_writing_through_it(src,
-                                                                                     tmp_path):
+def test_force_replaces_a_hard_link_to_a_file_outside_src_without_writing_through_it(src, tmp_path):
     mine = tmp_path / "elsewhere" / "my_notes.ipynb"
     mine.parent.mkdir()
     mine.write_text("the instructor's own file")
@@ -390,7 +463,7 @@ def test_existing_files_are_refused_without_force(src, tmp_path):
     (out / "b_plain.ipynb").write_text("old")
     with pytest.raises(StudentNotebookError, match="exists; use --force"):
         make_student_notebooks(src, out)
-    assert sorted(p.name for p in out.iterdir()) == ["b_plain.ipynb"]   # nothing written
+    assert sorted(p.name for p in out.iterdir()) == ["b_plain.ipynb"]  # nothing written
     assert (out / "b_plain.ipynb").read_text() == "old"
     make_student_notebooks(src, out, force=True)
     assert nbformat.read(out / "b_plain.ipynb", as_version=4).cells[0].outputs == []
@@ -407,24 +480,33 @@ def test_missing_or_empty_source_directory_is_refused(tmp_path):
 BAD_CELLS = {
     "begin_without_end": (
         new_code_cell("a = 1\n### BEGIN SOLUTION\nb = 2", metadata=nbgrader("g")),
-        "BEGIN SOLUTION at line 2 without END SOLUTION"),
+        "BEGIN SOLUTION at line 2 without END SOLUTION",
+    ),
     "end_without_begin": (
         new_code_cell("a = 1\n### END SOLUTION", metadata=nbgrader("g")),
-        "END SOLUTION without BEGIN SOLUTION at line 2"),
+        "END SOLUTION without BEGIN SOLUTION at line 2",
+    ),
     "nested_begin": (
-        new_code_cell("### BEGIN SOLUTION\n### BEGIN SOLUTION\nb = 2\n### END SOLUTION",
-                      metadata=nbgrader("g")),
-        "nested BEGIN SOLUTION at line 2"),
+        new_code_cell(
+            "### BEGIN SOLUTION\n### BEGIN SOLUTION\nb = 2\n### END SOLUTION",
+            metadata=nbgrader("g"),
+        ),
+        "nested BEGIN SOLUTION at line 2",
+    ),
     "markers_without_metadata": (
         new_code_cell("### BEGIN SOLUTION\nb = 2\n### END SOLUTION"),
-        "no nbgrader metadata"),
+        "no nbgrader metadata",
+    ),
     "markdown_begin_without_end": (
         new_markdown_cell("### BEGIN SOLUTION\nwords", metadata=nbgrader("g")),
-        "without END SOLUTION"),
+        "without END SOLUTION",
+    ),
     "hidden_tests_without_end": (
-        new_code_cell("### BEGIN HIDDEN TESTS\nassert x",
-                      metadata=nbgrader("g", solution=False, grade=True)),
-        "BEGIN HIDDEN TESTS at line 1 without END HIDDEN TESTS"),
+        new_code_cell(
+            "### BEGIN HIDDEN TESTS\nassert x", metadata=nbgrader("g", solution=False, grade=True)
+        ),
+        "BEGIN HIDDEN TESTS at line 1 without END HIDDEN TESTS",
+    ),
 }
 
 
@@ -432,7 +514,7 @@ BAD_CELLS = {
 def test_malformed_markers_are_refused_and_nothing_is_written(tmp_path, kind):
     bad_cell, fragment = BAD_CELLS[kind]
     src = tmp_path / "src"
-    write(synthetic_notebook(), src / "a_good.ipynb")       # converted first, in memory only
+    write(synthetic_notebook(), src / "a_good.ipynb")  # converted first, in memory only
     bad = new_notebook(cells=[new_markdown_cell("intro"), bad_cell])
     write(bad, src / "b_bad.ipynb")
     with pytest.raises(StudentNotebookError) as info:
@@ -457,10 +539,12 @@ def test_repeated_grade_ids_are_refused(tmp_path):
 # the machine allows it, and OUT_DIR (fresh, or holding an older copy that --force would
 # replace) is left exactly as it was.
 
+
 def big_notebook():
     """About 200 kB of student copy: more than the small filesystem below holds."""
-    return new_notebook(cells=[new_markdown_cell("long text " * 20_000)],
-                        metadata={"kernelspec": KERNELSPEC})
+    return new_notebook(
+        cells=[new_markdown_cell("long text " * 20_000)], metadata={"kernelspec": KERNELSPEC}
+    )
 
 
 def assert_fails_cleanly(src, out, capsys, fragment, force=True):
@@ -483,8 +567,9 @@ def try_small_tmpfs(mountpoint):
     """Mount a 64 KiB tmpfs at ``mountpoint``; False where this process may not mount."""
     if not hasattr(os, "geteuid") or os.geteuid() != 0 or shutil.which("mount") is None:
         return False
-    done = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(mountpoint)],
-                          capture_output=True)
+    done = subprocess.run(
+        ["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(mountpoint)], capture_output=True
+    )
     return done.returncode == 0
 
 
@@ -520,7 +605,7 @@ def test_a_full_disk_writes_nothing(src, small_disk, capsys, existing):
         (out / "a_chapter.ipynb").write_text("older copy")
     assert_fails_cleanly(src, out, capsys, "No space left on device")
     assert not out.exists() or [p.name for p in out.iterdir()] == ["a_chapter.ipynb"]
-    (src / "c_big.ipynb").unlink()                      # without it, the copies fit
+    (src / "c_big.ipynb").unlink()  # without it, the copies fit
     assert main([str(src), str(out), "--force"]) == 0
     assert sorted(p.name for p in out.iterdir()) == ["a_chapter.ipynb", "b_plain.ipynb"]
 
@@ -540,10 +625,14 @@ def failing_rename(monkeypatch, fail_at, exc):
 
 
 @pytest.mark.parametrize("fail_at", [0, 1, 2, 3])
-@pytest.mark.parametrize("exc", [OSError(errno.EIO, "Input/output error"), KeyboardInterrupt()],
-                         ids=["io-error", "ctrl-c"])
-def test_a_failure_while_moving_into_place_puts_the_old_files_back(src, tmp_path, capsys,
-                                                                   monkeypatch, fail_at, exc):
+@pytest.mark.parametrize(
+    "exc",
+    [OSError(errno.EIO, "Input/output error"), KeyboardInterrupt()],
+    ids=["io-error", "ctrl-c"],
+)
+def test_a_failure_while_moving_into_place_puts_the_old_files_back(
+    src, tmp_path, capsys, monkeypatch, fail_at, exc
+):
     out = tmp_path / "out"
     out.mkdir()
     (out / "a_chapter.ipynb").write_text("older copy of a")
@@ -573,9 +662,14 @@ def test_an_interrupt_while_writing_leaves_nothing(src, tmp_path, capsys, monkey
 
 # --------------------------------------------------------------------------------- command line
 
+
 def run_cli(*args):
-    return subprocess.run([sys.executable, "-m", "course_lib.student", *map(str, args)],
-                          capture_output=True, text=True, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "course_lib.student", *map(str, args)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
 
 
 def test_cli_writes_copies_and_exits_zero(src, tmp_path):
@@ -588,8 +682,10 @@ def test_cli_writes_copies_and_exits_zero(src, tmp_path):
 def test_cli_errors_exit_two_with_one_line_and_no_traceback(src, tmp_path):
     out = tmp_path / "out"
     make_student_notebooks(src, out)
-    for args, fragment in [((src, out), "exists; use --force"),
-                           ((src, src / "inner"), "inside the source directory")]:
+    for args, fragment in [
+        ((src, out), "exists; use --force"),
+        ((src, src / "inner"), "inside the source directory"),
+    ]:
         result = run_cli(*args)
         assert result.returncode == 2
         assert result.stderr.count("\n") == 1 and fragment in result.stderr
@@ -599,8 +695,7 @@ def test_cli_errors_exit_two_with_one_line_and_no_traceback(src, tmp_path):
 
 
 def test_cli_unbalanced_markers_exit_two_and_write_nothing(tmp_path):
-    bad = new_notebook(cells=[new_code_cell("### BEGIN SOLUTION\nx = 1",
-                                            metadata=nbgrader("g"))])
+    bad = new_notebook(cells=[new_code_cell("### BEGIN SOLUTION\nx = 1", metadata=nbgrader("g"))])
     write(bad, tmp_path / "src" / "bad.ipynb")
     result = run_cli(tmp_path / "src", tmp_path / "out")
     assert result.returncode == 2 and "bad.ipynb: cell 0" in result.stderr
@@ -614,9 +709,11 @@ REAL = sorted(p for p in NOTEBOOKS.glob("*.ipynb") if "BEGIN SOLUTION" in p.read
 
 
 def cells_with(nb, flag, cell_type=None):
-    return {i for i, c in enumerate(nb.cells)
-            if c.get("metadata", {}).get("nbgrader", {}).get(flag)
-            and cell_type in (None, c.cell_type)}
+    return {
+        i
+        for i, c in enumerate(nb.cells)
+        if c.get("metadata", {}).get("nbgrader", {}).get(flag) and cell_type in (None, c.cell_type)
+    }
 
 
 def region_lines(source):
@@ -642,7 +739,7 @@ def real_copies(tmp_path_factory):
     before = snapshot(NOTEBOOKS)
     out = tmp_path_factory.mktemp("student")
     make_student_notebooks(NOTEBOOKS, out)
-    assert snapshot(NOTEBOOKS) == before             # the sources are untouched
+    assert snapshot(NOTEBOOKS) == before  # the sources are untouched
     return out
 
 
@@ -693,9 +790,11 @@ def run_cells(nb, cwd, timeout=120):
                 errors[i] = reply["content"]["ename"]
             while True:  # drain this cell's output up to the kernel going idle
                 msg = kc.get_iopub_msg(timeout=timeout)
-                if (msg["parent_header"].get("msg_id") == msg_id
-                        and msg["msg_type"] == "status"
-                        and msg["content"]["execution_state"] == "idle"):
+                if (
+                    msg["parent_header"].get("msg_id") == msg_id
+                    and msg["msg_type"] == "status"
+                    and msg["content"]["execution_state"] == "idle"
+                ):
                     break
     finally:
         kc.stop_channels()
@@ -705,12 +804,13 @@ def run_cells(nb, cwd, timeout=120):
 
 @pytest.mark.notebook_exec
 @pytest.mark.parametrize("path", REAL, ids=lambda p: p.name)
-def test_executing_real_student_notebook_fails_exactly_in_solution_and_grade_cells(path,
-                                                                                   real_copies):
+def test_executing_real_student_notebook_fails_exactly_in_solution_and_grade_cells(
+    path, real_copies
+):
     nb = nbformat.read(real_copies / path.name, as_version=4)
     errors = run_cells(nb, real_copies)
     solutions = cells_with(nb, "solution", "code")
-    grades = cells_with(nb, "grade", "code") - solutions     # nbgrader's autograder tests
+    grades = cells_with(nb, "grade", "code") - solutions  # nbgrader's autograder tests
     seen = {i: (e, nb.cells[i].id) for i, e in errors.items()}
     assert set(errors) == solutions | grades, seen
     assert {errors[i] for i in solutions} == {"NotImplementedError"}, seen

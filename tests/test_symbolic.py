@@ -145,9 +145,7 @@ def test_unit_reduce_refuses_non_polynomials():
         unit_reduce(W1, [W1, W1, W2])
 
 
-_monomial = st.tuples(
-    st.integers(-3, 3), st.integers(0, 3), st.integers(0, 3), st.integers(0, 4)
-)
+_monomial = st.tuples(st.integers(-3, 3), st.integers(0, 3), st.integers(0, 3), st.integers(0, 4))
 _coefficient = st.sampled_from([1, theta, sp.sin(theta), sp.cos(theta), sp.Rational(1, 2)])
 
 

@@ -26,8 +26,10 @@ ROOT = Path(__file__).resolve().parents[1]
 STUDENT_BRANCH = "student"
 BEGIN = "<!-- launch-links:begin (written by tools/course_links.py from pyproject.toml) -->"
 END = "<!-- launch-links:end -->"
-UNSET = ("not published yet: set `Repository` in `[project.urls]` of `pyproject.toml`, "
-         "then run `make notebooks`")
+UNSET = (
+    "not published yet: set `Repository` in `[project.urls]` of `pyproject.toml`, "
+    "then run `make notebooks`"
+)
 _GITHUB = re.compile(r"^https://github\.com/(?P<owner>[^/]+)/(?P<repo>[^/]+?)(?:\.git)?/?$")
 
 
@@ -37,8 +39,9 @@ def _project_urls(text):
         import tomllib
     except ImportError:  # Python 3.10: the table is flat ``key = "value"`` lines
         table = re.search(r"^\[project\.urls\]\s*$(.*?)(?=^\[|\Z)", text, re.M | re.S)
-        pairs = re.findall(r'^\s*"?([\w .-]+?)"?\s*=\s*"([^"]*)"', table.group(1) if table else "",
-                           re.M)
+        pairs = re.findall(
+            r'^\s*"?([\w .-]+?)"?\s*=\s*"([^"]*)"', table.group(1) if table else "", re.M
+        )
         return dict(pairs)
     return tomllib.loads(text).get("project", {}).get("urls", {})
 
@@ -63,15 +66,19 @@ def colab_url(url, notebook, branch=STUDENT_BRANCH):
     m = _GITHUB.match(url)
     if not m:
         return None
-    return (f"https://colab.research.google.com/github/{m['owner']}/{m['repo']}/blob/{branch}"
-            f"/notebooks/{notebook}")
+    return (
+        f"https://colab.research.google.com/github/{m['owner']}/{m['repo']}/blob/{branch}"
+        f"/notebooks/{notebook}"
+    )
 
 
 def nbgitpuller_url(url, hub="https://HUB.example.edu", branch=STUDENT_BRANCH):
     """nbgitpuller link: the hub clones (later: merges) ``branch`` and opens its notebooks."""
     folder = url.rstrip("/").removesuffix(".git").rsplit("/", 1)[-1]
-    return (f"{hub}/hub/user-redirect/git-pull?repo={quote(url, safe='')}&branch={branch}"
-            f"&urlpath={quote(f'lab/tree/{folder}/notebooks', safe='')}")
+    return (
+        f"{hub}/hub/user-redirect/git-pull?repo={quote(url, safe='')}&branch={branch}"
+        f"&urlpath={quote(f'lab/tree/{folder}/notebooks', safe='')}"
+    )
 
 
 def readme_block(url, notebooks):
@@ -79,12 +86,21 @@ def readme_block(url, notebooks):
     if url is None:
         lines = [f"**Binder, Colab and hub links:** {UNSET}."]
     else:
-        lines = [f"[![Binder](https://mybinder.org/badge_logo.svg)]({binder_url(url)}) "
-                 f"(student edition, branch `{STUDENT_BRANCH}`)", ""]
+        lines = [
+            f"[![Binder](https://mybinder.org/badge_logo.svg)]({binder_url(url)}) "
+            f"(student edition, branch `{STUDENT_BRANCH}`)",
+            "",
+        ]
         for nb in notebooks:
             colab = colab_url(url, nb)
-            lines.append(f"- `{nb}`: " + (f"[open in Colab]({colab})" if colab
-                                          else "Colab opens notebooks from GitHub only"))
+            lines.append(
+                f"- `{nb}`: "
+                + (
+                    f"[open in Colab]({colab})"
+                    if colab
+                    else "Colab opens notebooks from GitHub only"
+                )
+            )
         lines += ["", f"Hub link (replace the hub address): `{nbgitpuller_url(url)}`"]
     return "\n".join([BEGIN, *lines, END])
 

@@ -48,7 +48,7 @@ CELL_TIMEOUT = 300  # seconds; a safety net, never reached (chapters take well u
 _UUID_HEX = re.compile(r"(?<![0-9a-f])[0-9a-f]{32}(?![0-9a-f])")
 _FRAME = re.compile(r'"data:image/png;base64,([A-Za-z0-9+/=\\\n]+)"')
 
-SETUP_TEMPLATE = '''\
+SETUP_TEMPLATE = """\
 # Setup, run it first: makes the course library importable (laptop, JupyterHub, Binder, Colab).
 import importlib.util, pathlib, sys
 # The course repository, from [project.urls] in pyproject.toml (None: not published yet)
@@ -61,7 +61,7 @@ if importlib.util.find_spec("course_lib") is None:
     elif COURSE_URL:
         %pip install --quiet "git+{{COURSE_URL}}"
     else:
-        raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")'''
+        raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")"""
 
 
 def setup_source(url=None):
@@ -182,10 +182,15 @@ def _client_class():
 
 def execute(nb, cwd):
     """Run every cell of ``nb`` in a fresh kernel started in ``cwd``; return the seconds."""
-    client = _client_class()(nb, timeout=CELL_TIMEOUT, record_timing=False,
-                             store_widget_state=False, coalesce_streams=True,
-                             kernel_name="python3",
-                             resources={"metadata": {"path": str(cwd)}})
+    client = _client_class()(
+        nb,
+        timeout=CELL_TIMEOUT,
+        record_timing=False,
+        store_widget_state=False,
+        coalesce_streams=True,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(cwd)}},
+    )
     start = time.monotonic()
     client.execute()
     return time.monotonic() - start
@@ -204,8 +209,11 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     mode = parser.add_mutually_exclusive_group(required=True)
     mode.add_argument("--apply", action="store_true", help="set up, execute, clean, write")
-    mode.add_argument("--check", action="store_true",
-                      help="set up and clean in memory (no execution); exit 1 if a file would change")
+    mode.add_argument(
+        "--check",
+        action="store_true",
+        help="set up and clean in memory (no execution); exit 1 if a file would change",
+    )
     parser.add_argument("notebooks", nargs="+", type=Path)
     args = parser.parse_args(argv)
     url = repository_url()
@@ -216,8 +224,10 @@ def main(argv=None):
         if args.apply:
             if new != old:
                 path.write_text(new, encoding="utf-8")
-            print(f"{path}: executed in {seconds:.1f} s, {size}, "
-                  + ("rewritten" if new != old else "unchanged"))
+            print(
+                f"{path}: executed in {seconds:.1f} s, {size}, "
+                + ("rewritten" if new != old else "unchanged")
+            )
         elif new != old:
             changed.append(path)
             print(f"{path}: not clean ({size} after cleaning); run `make notebooks`")

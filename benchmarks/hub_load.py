@@ -61,15 +61,21 @@ from tornado.websocket import WebSocketClosedError, websocket_connect
 ROOT = Path(__file__).resolve().parent.parent
 MAX_STUDENTS = 50
 CHECK_MARK = "✓"
-COURSE_DIR = "rotations-course"          # where nbgitpuller would put the repository
+COURSE_DIR = "rotations-course"  # where nbgitpuller would put the repository
 # The students' servers as docs/classroom.md deploys them (/etc/jupyter there): nbgrader's server
 # extensions are the instructor's tools and cost each student's server about 40 MB.
-STUDENT_SERVER_CONFIG = {"ServerApp": {"jpserver_extensions": {
-    f"nbgrader.server_extensions.{name}": False
-    for name in ("formgrader", "course_list", "assignment_list", "validate_assignment")}}}
+STUDENT_SERVER_CONFIG = {
+    "ServerApp": {
+        "jpserver_extensions": {
+            f"nbgrader.server_extensions.{name}": False
+            for name in ("formgrader", "course_list", "assignment_list", "validate_assignment")
+        }
+    }
+}
 
 
 # --------------------------------------------------------------------------------- results
+
 
 @dataclass
 class NotebookRun:
@@ -77,9 +83,9 @@ class NotebookRun:
     notebook: str
     seconds: float = 0.0
     kernel_start: float = 0.0
-    reconnects: int = 0                             # websocket reconnects, as JupyterLab's
-    cells: list = field(default_factory=list)       # (cell index, seconds)
-    failures: list = field(default_factory=list)    # one line each
+    reconnects: int = 0  # websocket reconnects, as JupyterLab's
+    cells: list = field(default_factory=list)  # (cell index, seconds)
+    failures: list = field(default_factory=list)  # one line each
 
     @property
     def ok(self):
@@ -107,6 +113,7 @@ def percentile(values, q):
 
 # --------------------------------------------------------------------------------- the hub
 
+
 def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -119,24 +126,24 @@ def hub_config(tmp, ports, proxy, password, service_token):
     args = ["--ServerApp.allow_root=True"] if os.geteuid() == 0 else []
     return f"""
 c = get_config()  # noqa
-c.JupyterHub.bind_url = "http://127.0.0.1:{ports['public']}"
-c.JupyterHub.hub_bind_url = "http://127.0.0.1:{ports['hub']}"
-c.ConfigurableHTTPProxy.api_url = "http://127.0.0.1:{ports['proxy_api']}"
+c.JupyterHub.bind_url = "http://127.0.0.1:{ports["public"]}"
+c.JupyterHub.hub_bind_url = "http://127.0.0.1:{ports["hub"]}"
+c.ConfigurableHTTPProxy.api_url = "http://127.0.0.1:{ports["proxy_api"]}"
 c.ConfigurableHTTPProxy.command = [{str(proxy)!r}]
-c.ConfigurableHTTPProxy.pid_file = {str(tmp / 'proxy.pid')!r}
-c.JupyterHub.db_url = "sqlite:///{tmp / 'jupyterhub.sqlite'}"
-c.JupyterHub.cookie_secret_file = {str(tmp / 'cookie_secret')!r}
-c.JupyterHub.pid_file = {str(tmp / 'hub.pid')!r}
+c.ConfigurableHTTPProxy.pid_file = {str(tmp / "proxy.pid")!r}
+c.JupyterHub.db_url = "sqlite:///{tmp / "jupyterhub.sqlite"}"
+c.JupyterHub.cookie_secret_file = {str(tmp / "cookie_secret")!r}
+c.JupyterHub.pid_file = {str(tmp / "hub.pid")!r}
 c.JupyterHub.authenticator_class = "dummy"
 c.DummyAuthenticator.password = {password!r}
 c.Authenticator.allow_all = True   # the users are created through the REST API below
 c.JupyterHub.spawner_class = "simple"
-c.SimpleLocalProcessSpawner.home_dir_template = {str(tmp / 'home' / '{username}')!r}
+c.SimpleLocalProcessSpawner.home_dir_template = {str(tmp / "home" / "{username}")!r}
 c.Spawner.ip = "127.0.0.1"
 c.Spawner.cmd = {singleuser!r}
 c.Spawner.args = {args!r}
 c.Spawner.default_url = "/lab"
-c.Spawner.environment = {{"JUPYTER_CONFIG_PATH": {str(tmp / 'etc-jupyter')!r}}}
+c.Spawner.environment = {{"JUPYTER_CONFIG_PATH": {str(tmp / "etc-jupyter")!r}}}
 c.Spawner.start_timeout = 600
 c.Spawner.http_timeout = 600
 c.JupyterHub.concurrent_spawn_limit = {MAX_STUDENTS}
@@ -154,7 +161,8 @@ c.JupyterHub.load_roles = [{{
 def make_homes(tmp, users, notebooks):
     (tmp / "etc-jupyter").mkdir()
     (tmp / "etc-jupyter" / "jupyter_server_config.json").write_text(
-        json.dumps(STUDENT_SERVER_CONFIG, indent=1))
+        json.dumps(STUDENT_SERVER_CONFIG, indent=1)
+    )
     for user in users:
         course = tmp / "home" / user / COURSE_DIR / "notebooks"
         course.mkdir(parents=True)
@@ -167,10 +175,14 @@ def start_hub(tmp, config):
     log = open(tmp / "hub.log", "wb")  # noqa: SIM115 - closed by stop_everything
     env = dict(os.environ, PATH=f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")
     # its own session: a Ctrl-C reaches this script, which then stops the hub in order
-    hub = subprocess.Popen([sys.executable, "-m", "jupyterhub", "-f",
-                            str(tmp / "jupyterhub_config.py")],
-                           cwd=tmp, stdout=log, stderr=subprocess.STDOUT, env=env,
-                           start_new_session=True)
+    hub = subprocess.Popen(
+        [sys.executable, "-m", "jupyterhub", "-f", str(tmp / "jupyterhub_config.py")],
+        cwd=tmp,
+        stdout=log,
+        stderr=subprocess.STDOUT,
+        env=env,
+        start_new_session=True,
+    )
     hub.log_file = log
     return hub
 
@@ -182,12 +194,15 @@ class Api:
         self.base, self.service_token = base, service_token
         self.http = AsyncHTTPClient(force_instance=True, max_clients=4 * MAX_STUDENTS)
 
-    async def call(self, method, path, token=None, body=None, ok=(200, 201, 202, 204),
-                   timeout=120):
-        request = HTTPRequest(self.base + path, method=method,
-                              headers={"Authorization": f"token {token or self.service_token}"},
-                              body=None if body is None else json.dumps(body),
-                              allow_nonstandard_methods=True, request_timeout=timeout)
+    async def call(self, method, path, token=None, body=None, ok=(200, 201, 202, 204), timeout=120):
+        request = HTTPRequest(
+            self.base + path,
+            method=method,
+            headers={"Authorization": f"token {token or self.service_token}"},
+            body=None if body is None else json.dumps(body),
+            allow_nonstandard_methods=True,
+            request_timeout=timeout,
+        )
         response = await self.http.fetch(request, raise_error=False)
         if response.code not in ok:
             text = (response.body or b"").decode(errors="replace")[:200]
@@ -219,12 +234,16 @@ class Api:
                 raise TimeoutError("the server did not start before the deadline")
             await asyncio.sleep(0.5)
         student.spawn_seconds = time.monotonic() - start
-        reply = await self.call("POST", f"/hub/api/users/{student.name}/tokens",
-                                body={"note": "hub-load", "expires_in": 6 * 3600})
+        reply = await self.call(
+            "POST",
+            f"/hub/api/users/{student.name}/tokens",
+            body={"note": "hub-load", "expires_in": 6 * 3600},
+        )
         student.token = reply["token"]
 
 
 # --------------------------------------------------------------------------------- a notebook
+
 
 def is_check_cell(cell):
     """A cell whose verdict the run must show: stored ✓, a check() call or an nbgrader test."""
@@ -255,9 +274,12 @@ class Kernel:
         self.ws, self.reconnects = None, 0
 
     async def connect(self):
-        self.ws = await websocket_connect(HTTPRequest(
-            self.url, headers={"Authorization": f"token {self.token}"}, request_timeout=120),
-            max_message_size=256 * 1024 * 1024)
+        self.ws = await websocket_connect(
+            HTTPRequest(
+                self.url, headers={"Authorization": f"token {self.token}"}, request_timeout=120
+            ),
+            max_message_size=256 * 1024 * 1024,
+        )
 
     async def reconnect(self):
         if self.reconnects == 3:
@@ -270,8 +292,7 @@ class Kernel:
         while True:
             raw = await asyncio.wait_for(self.ws.read_message(), timeout)
             if raw is not None:
-                return json.loads(raw) if isinstance(raw, str) else \
-                    deserialize_binary_message(raw)
+                return json.loads(raw) if isinstance(raw, str) else deserialize_binary_message(raw)
             await self.reconnect()
 
     async def send(self, text):
@@ -284,11 +305,24 @@ class Kernel:
     async def request(self, msg_type, content, timeout):
         """Send a shell request; return (reply content, [iopub messages]) once idle."""
         msg_id = uuid.uuid4().hex
-        await self.send(json.dumps({
-            "header": {"msg_id": msg_id, "msg_type": msg_type, "session": self.session,
-                       "username": "hub-load", "version": "5.3"},
-            "parent_header": {}, "metadata": {}, "content": content, "channel": "shell",
-            "buffers": []}))
+        await self.send(
+            json.dumps(
+                {
+                    "header": {
+                        "msg_id": msg_id,
+                        "msg_type": msg_type,
+                        "session": self.session,
+                        "username": "hub-load",
+                        "version": "5.3",
+                    },
+                    "parent_header": {},
+                    "metadata": {},
+                    "content": content,
+                    "channel": "shell",
+                    "buffers": [],
+                }
+            )
+        )
         reply, iopub, idle = None, [], False
         while reply is None or not idle:
             msg = await self.read(timeout)
@@ -298,8 +332,7 @@ class Kernel:
                 reply = msg["content"]
             elif msg["channel"] == "iopub":
                 iopub.append(msg)
-                idle = (msg["msg_type"] == "status"
-                        and msg["content"]["execution_state"] == "idle")
+                idle = msg["msg_type"] == "status" and msg["content"]["execution_state"] == "idle"
         return reply, iopub
 
     def close(self):
@@ -326,11 +359,22 @@ async def run_notebook(api, student, path, cell_timeout):
     user = f"/user/{student.name}"
     start, where, kernel, model = time.monotonic(), "opening the notebook", None, None
     try:
-        model = await api.call("POST", f"{user}/api/sessions", token=student.token, body={
-            "path": f"{COURSE_DIR}/notebooks/{path.name}", "name": path.name,
-            "type": "notebook", "kernel": {"name": "python3"}})
-        kernel = Kernel(api.base.replace("http", "ws", 1)
-                        + f"{user}/api/kernels/{model['kernel']['id']}/channels", student.token)
+        model = await api.call(
+            "POST",
+            f"{user}/api/sessions",
+            token=student.token,
+            body={
+                "path": f"{COURSE_DIR}/notebooks/{path.name}",
+                "name": path.name,
+                "type": "notebook",
+                "kernel": {"name": "python3"},
+            },
+        )
+        kernel = Kernel(
+            api.base.replace("http", "ws", 1)
+            + f"{user}/api/kernels/{model['kernel']['id']}/channels",
+            student.token,
+        )
         await kernel.connect()
         await kernel.request("kernel_info_request", {}, 300)
         run.kernel_start = time.monotonic() - start
@@ -338,10 +382,18 @@ async def run_notebook(api, student, path, cell_timeout):
             if cell.cell_type != "code":
                 continue
             where, t0 = f"cell {i}", time.monotonic()
-            reply, iopub = await kernel.request("execute_request", {
-                "code": cell.source, "silent": False, "store_history": True,
-                "user_expressions": {}, "allow_stdin": False, "stop_on_error": False},
-                cell_timeout)
+            reply, iopub = await kernel.request(
+                "execute_request",
+                {
+                    "code": cell.source,
+                    "silent": False,
+                    "store_history": True,
+                    "user_expressions": {},
+                    "allow_stdin": False,
+                    "stop_on_error": False,
+                },
+                cell_timeout,
+            )
             run.cells.append((i, time.monotonic() - t0))
             failure = cell_failure(i, cell, reply, iopub)
             if failure:
@@ -353,7 +405,7 @@ async def run_notebook(api, student, path, cell_timeout):
             kernel.close()
             run.reconnects = kernel.reconnects
         run.seconds = time.monotonic() - start
-    if model is not None:      # not reached when cancelled: the hub's shutdown ends it then
+    if model is not None:  # not reached when cancelled: the hub's shutdown ends it then
         await close_session(api, student, model["id"], run)
     return run
 
@@ -361,8 +413,9 @@ async def run_notebook(api, student, path, cell_timeout):
 async def close_session(api, student, session_id, run):
     """Shut the kernel down, as closing the notebook's tab with "shut down kernel" does."""
     try:
-        await api.call("DELETE", f"/user/{student.name}/api/sessions/{session_id}",
-                       token=student.token)
+        await api.call(
+            "DELETE", f"/user/{student.name}/api/sessions/{session_id}", token=student.token
+        )
     except (RuntimeError, OSError) as err:
         run.failures.append(f"closing the session: {err}")
 
@@ -386,6 +439,7 @@ async def load(api, hub, students, notebooks, deadline, cell_timeout):
 
 # --------------------------------------------------------------------------------- processes
 
+
 class Sampler(threading.Thread):
     """Every ``interval`` s: RSS of the hub, the proxy and each student's processes."""
 
@@ -393,11 +447,11 @@ class Sampler(threading.Thread):
         super().__init__(daemon=True)
         self.hub = psutil.Process(hub_pid)
         self.interval, self.stop = interval, threading.Event()
-        self.seen = {}          # pid -> (process, role)
-        self.peak = {}          # role -> peak RSS (sum over its processes) in bytes
-        self.peak_pss = {}      # role -> peak PSS (shared pages divided among their users)
-        self.kind_peak = {}     # "server" / "kernel" -> peak RSS of one such process
-        self.cpu = {}           # pid -> last seen user+system CPU seconds
+        self.seen = {}  # pid -> (process, role)
+        self.peak = {}  # role -> peak RSS (sum over its processes) in bytes
+        self.peak_pss = {}  # role -> peak PSS (shared pages divided among their users)
+        self.kind_peak = {}  # "server" / "kernel" -> peak RSS of one such process
+        self.cpu = {}  # pid -> last seen user+system CPU seconds
         self.ports = set()
         self.rounds = 0
 
@@ -417,7 +471,7 @@ class Sampler(threading.Thread):
         except psutil.Error:
             return
         totals, pss = {}, {}
-        full = self.rounds % 4 == 0          # PSS reads smaps: once a second is enough
+        full = self.rounds % 4 == 0  # PSS reads smaps: once a second is enough
         self.rounds += 1
         for proc in procs:
             if proc.pid not in self.seen:
@@ -503,6 +557,7 @@ def stop_everything(hub, sampler, ports):
 
 # --------------------------------------------------------------------------------- report
 
+
 def machine():
     cpu = platform.processor() or "?"
     try:
@@ -533,6 +588,7 @@ def report(students, notebooks, sampler, wall, hub_version):
     pss = [sampler.peak_pss.get(s.name, 0) for s in students] if sampler else [0]
     kind = sampler.kind_peak if sampler else {}
     cpu = [sampler.cpu_of(s.name) for s in students] if sampler else [0]
+
     def p50_p95(values, digits=1):
         return f"{percentile(values, 50):.{digits}f} s / {percentile(values, 95):.{digits}f} s"
 
@@ -543,35 +599,50 @@ def report(students, notebooks, sampler, wall, hub_version):
         ("server start p50 / p95", p50_p95(spawn)),
         ("kernel start p50 / p95", p50_p95(kstart)),
         ("notebook time p50 / p95", p50_p95(nb_times)),
-        ("cell time p95 / max", f"{percentile(cell_times, 95):.2f} s / "
-                                f"{max(cell_times, default=float('nan')):.2f} s"),
-        ("peak RSS per student p50 / max",
-         f"{mb(statistics.median(rss))} / {mb(max(rss))}  (server + kernel)"),
-        ("  one server / one kernel (max)",
-         f"{mb(kind.get('server', 0))} / {mb(kind.get('kernel', 0))}"),
-        ("peak PSS per student p50 / max",
-         f"{mb(statistics.median(pss))} / {mb(max(pss))}  (shared pages divided)"),
-        ("CPU per student p50 / max",
-         f"{statistics.median(cpu):.0f} s / {max(cpu):.0f} s  (all {len(notebooks)} notebooks)"),
+        (
+            "cell time p95 / max",
+            f"{percentile(cell_times, 95):.2f} s / {max(cell_times, default=float('nan')):.2f} s",
+        ),
+        (
+            "peak RSS per student p50 / max",
+            f"{mb(statistics.median(rss))} / {mb(max(rss))}  (server + kernel)",
+        ),
+        (
+            "  one server / one kernel (max)",
+            f"{mb(kind.get('server', 0))} / {mb(kind.get('kernel', 0))}",
+        ),
+        (
+            "peak PSS per student p50 / max",
+            f"{mb(statistics.median(pss))} / {mb(max(pss))}  (shared pages divided)",
+        ),
+        (
+            "CPU per student p50 / max",
+            f"{statistics.median(cpu):.0f} s / {max(cpu):.0f} s  (all {len(notebooks)} notebooks)",
+        ),
         ("websocket reconnects", f"{sum(r.reconnects for r in runs)}"),
         ("hub peak RSS", mb(sampler.peak.get("hub", 0)) if sampler else "?"),
         ("proxy peak RSS", mb(sampler.peak.get("proxy", 0)) if sampler else "?"),
         ("wall time, all students", f"{wall:.0f} s"),
     ]
-    print(f"\nhub-load: JupyterHub {hub_version}, {len(students)} students at once, "
-          f"machine: {machine()}")
+    print(
+        f"\nhub-load: JupyterHub {hub_version}, {len(students)} students at once, "
+        f"machine: {machine()}"
+    )
     width = max(len(k) for k, _ in rows)
     for k, v in rows:
         print(f"  {k:<{width}}  {v}")
-    print(f"\n  {'notebook':34} {'runs':>4} {'failed':>6} {'p50':>8} {'p95':>8} "
-          f"{'slowest cell':>14}")
+    print(
+        f"\n  {'notebook':34} {'runs':>4} {'failed':>6} {'p50':>8} {'p95':>8} {'slowest cell':>14}"
+    )
     for path in notebooks:
         mine = [r for r in runs if r.notebook == path.name]
         times = [r.seconds for r in mine if r.ok]
         slow = max(((t, i) for r in mine for i, t in r.cells), default=(float("nan"), "-"))
-        print(f"  {path.name:34} {len(mine):>4} {sum(not r.ok for r in mine):>6} "
-              f"{percentile(times, 50):7.1f}s {percentile(times, 95):7.1f}s "
-              f"{slow[0]:8.2f}s #{slow[1]}")
+        print(
+            f"  {path.name:34} {len(mine):>4} {sum(not r.ok for r in mine):>6} "
+            f"{percentile(times, 50):7.1f}s {percentile(times, 95):7.1f}s "
+            f"{slow[0]:8.2f}s #{slow[1]}"
+        )
     problems = [f"{s.name}: {s.error}" for s in students if s.error]
     problems += [f"{r.user} {r.notebook}: {f}" for r in runs for f in r.failures]
     for line in problems[:30]:
@@ -582,32 +653,58 @@ def report(students, notebooks, sampler, wall, hub_version):
 
 
 def save_json(path, students, sampler):
-    data = {"students": [{
-        "name": s.name, "spawn_seconds": s.spawn_seconds, "error": s.error,
-        "peak_rss": sampler.peak.get(s.name, 0) if sampler else None,
-        "peak_pss": sampler.peak_pss.get(s.name, 0) if sampler else None,
-        "cpu_seconds": sampler.cpu_of(s.name) if sampler else None,
-        "runs": [{"notebook": r.notebook, "seconds": r.seconds, "kernel_start": r.kernel_start,
-                  "reconnects": r.reconnects, "cells": r.cells, "failures": r.failures}
-                 for r in s.runs]}
-        for s in students],
+    data = {
+        "students": [
+            {
+                "name": s.name,
+                "spawn_seconds": s.spawn_seconds,
+                "error": s.error,
+                "peak_rss": sampler.peak.get(s.name, 0) if sampler else None,
+                "peak_pss": sampler.peak_pss.get(s.name, 0) if sampler else None,
+                "cpu_seconds": sampler.cpu_of(s.name) if sampler else None,
+                "runs": [
+                    {
+                        "notebook": r.notebook,
+                        "seconds": r.seconds,
+                        "kernel_start": r.kernel_start,
+                        "reconnects": r.reconnects,
+                        "cells": r.cells,
+                        "failures": r.failures,
+                    }
+                    for r in s.runs
+                ],
+            }
+            for s in students
+        ],
         "hub_peak_rss": sampler.peak.get("hub") if sampler else None,
-        "proxy_peak_rss": sampler.peak.get("proxy") if sampler else None}
+        "proxy_peak_rss": sampler.peak.get("proxy") if sampler else None,
+    }
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(json.dumps(data, indent=1))
 
 
 # --------------------------------------------------------------------------------- main
 
+
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--students", type=int, default=20, help=f"1 to {MAX_STUDENTS}")
-    parser.add_argument("--proxy", default=shutil.which("configurable-http-proxy"),
-                        help="the configurable-http-proxy executable")
-    parser.add_argument("--notebooks", default=str(ROOT / "notebooks"),
-                        help="folder of the chapter notebooks (*.ipynb)")
-    parser.add_argument("--deadline", type=float, default=1800,
-                        help="seconds for everything, start to clean-up (default 1800)")
+    parser.add_argument(
+        "--proxy",
+        default=shutil.which("configurable-http-proxy"),
+        help="the configurable-http-proxy executable",
+    )
+    parser.add_argument(
+        "--notebooks",
+        default=str(ROOT / "notebooks"),
+        help="folder of the chapter notebooks (*.ipynb)",
+    )
+    parser.add_argument(
+        "--deadline",
+        type=float,
+        default=1800,
+        help="seconds for everything, start to clean-up (default 1800)",
+    )
     parser.add_argument("--cell-timeout", type=float, default=300)
     parser.add_argument("--json", help="also write every measurement to this file")
     parser.add_argument("--log", help="keep the hub's log (with the servers') in this file")
@@ -637,13 +734,17 @@ def main(argv=None):
     tmp = Path(tempfile.mkdtemp(prefix="hub-load-"))
     hub = sampler = None
     aborted = ""
-    signal.signal(signal.SIGINT, signal.default_int_handler)   # even when started in background
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # even when started in background
     signal.signal(signal.SIGTERM, interrupt)
     start = time.monotonic()
     try:
         make_homes(tmp, [s.name for s in students], notebooks)
-        hub = start_hub(tmp, hub_config(tmp, ports, Path(args.proxy).resolve(),
-                                        secrets.token_urlsafe(24), service_token))
+        hub = start_hub(
+            tmp,
+            hub_config(
+                tmp, ports, Path(args.proxy).resolve(), secrets.token_urlsafe(24), service_token
+            ),
+        )
         sampler = Sampler(hub.pid)
         sampler.start()
         api = Api(f"http://127.0.0.1:{ports['public']}", service_token)
@@ -669,9 +770,11 @@ def main(argv=None):
     passed, failed = report(students, notebooks, sampler, wall, version("jupyterhub"))
     if args.json:
         save_json(Path(args.json), students, sampler)
-    print(f"\n  clean-up: {nprocs} processes stopped in {t_stop:.0f} s, "
-          f"{'nothing left running or listening' if not problems else '; '.join(problems)}, "
-          f"temporary homes {'removed' if not tmp.exists() else 'NOT removed: ' + str(tmp)}")
+    print(
+        f"\n  clean-up: {nprocs} processes stopped in {t_stop:.0f} s, "
+        f"{'nothing left running or listening' if not problems else '; '.join(problems)}, "
+        f"temporary homes {'removed' if not tmp.exists() else 'NOT removed: ' + str(tmp)}"
+    )
     if aborted:
         print(f"  ABORTED: {aborted}")
         if log_tail:

@@ -22,8 +22,34 @@ import course_lib
 from course_lib import exercises as EX
 from course_lib import symbolic as S
 from course_lib.exercises import (
-    EXERCISES, A, B, CheckResult, Choice, R, Value, W, X, Y, alpha, beta, check, d,
-    exercises, get, hat, names, omega, t, theta, u, x, xx, xy, y, yy, z,
+    EXERCISES,
+    A,
+    B,
+    CheckResult,
+    Choice,
+    R,
+    Value,
+    W,
+    X,
+    Y,
+    alpha,
+    beta,
+    check,
+    d,
+    exercises,
+    get,
+    hat,
+    names,
+    omega,
+    t,
+    theta,
+    u,
+    x,
+    xx,
+    xy,
+    y,
+    yy,
+    z,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -52,21 +78,33 @@ def mistakes():
 
 # Equivalent forms of right answers, written differently from the reference solutions.
 EQUIVALENT = {
-    "coords_by_projection": [[sp.sqrt(2), -sp.sqrt(2), 2], (1.4142135624, -1.4142135624, 2.0),
-                             np.array([[np.sqrt(2), -np.sqrt(2), 2]])],
+    "coords_by_projection": [
+        [sp.sqrt(2), -sp.sqrt(2), 2],
+        (1.4142135624, -1.4142135624, 2.0),
+        np.array([[np.sqrt(2), -np.sqrt(2), 2]]),
+    ],
     "angle_from_lengths": [sp.pi / 3, np.pi / 3, 1.0471975512, sp.atan(sp.sqrt(3))],
     "which_are_rigid": ["bde", "e, d, b", ["b", "d", "e"], frozenset("BDE".lower())],
-    "unit_tangent": [sp.Matrix([-2 * sp.sin(2 * t), 2 * sp.cos(2 * t), 3]) / sp.sqrt(13),
-                     [-4 * sp.sin(t) * sp.cos(t) / sp.sqrt(13),
-                      2 * (1 - 2 * sp.sin(t) ** 2) / sp.sqrt(13), 3 / sp.sqrt(13)]],
-    "lagrange_identity": [xx * yy - xy * xy, (xx * yy - xy ** 2) * 1.0],
+    "unit_tangent": [
+        sp.Matrix([-2 * sp.sin(2 * t), 2 * sp.cos(2 * t), 3]) / sp.sqrt(13),
+        [
+            -4 * sp.sin(t) * sp.cos(t) / sp.sqrt(13),
+            2 * (1 - 2 * sp.sin(t) ** 2) / sp.sqrt(13),
+            3 / sp.sqrt(13),
+        ],
+    ],
+    "lagrange_identity": [xx * yy - xy * xy, (xx * yy - xy**2) * 1.0],
     "bac_cab": [(x.T * z)[0, 0] * 1, -(y.T * x)[0, 0]] and [[x.dot(z), -y.dot(x)]],
-    "motion_from_points": [[[0, 0, 1], [0, -1, 0], [1, 0, 0]], sp.Matrix([[0, 0, 1], [0, -1, 0],
-                                                                          [1, 0, 0]])],
+    "motion_from_points": [
+        [[0, 0, 1], [0, -1, 0], [1, 0, 0]],
+        sp.Matrix([[0, 0, 1], [0, -1, 0], [1, 0, 0]]),
+    ],
     "which_in_so3": ["cad", {"d", "c", "a"}],
     "vb_from_va": [[3, 1, 2], np.array([3.0, 1.0, 2.0])],
-    "complete_rotation": [[-sp.Rational(1, 3), sp.Rational(2, 3), sp.Rational(2, 3)],
-                          np.array([-1, 2, 2]) / 3],
+    "complete_rotation": [
+        [-sp.Rational(1, 3), sp.Rational(2, 3), sp.Rational(2, 3)],
+        np.array([-1, 2, 2]) / 3,
+    ],
     "inverse_of_product": [(A * B.T).T, B * A.T * sp.Identity(3)],
     "rigid_inverse": [-(d.T * R).T, (-1) * R.T * d],
     "hat_product": [(X * Y.T).T, Y * X.T + sp.ZeroMatrix(3, 3)],
@@ -75,30 +113,45 @@ EQUIVALENT = {
     "pendulum_speed": [sp.pi, np.pi, 3.14159265359],
     "hat_fifth": [N2 * N2 * W, (omega.T * omega)[0, 0] ** 2 * W],
     "half_turn": [sp.eye(3) + 2 * (u * u.T - sp.Identity(3)), -sp.Identity(3) + u * u.T * 2],
-    "rodrigues_derivative": [W * (sp.cos(theta) * sp.Identity(3) + sp.sin(theta) * W),
-                             sp.cos(theta) * W - sp.sin(theta) * W * W * (-1)],
+    "rodrigues_derivative": [
+        W * (sp.cos(theta) * sp.Identity(3) + sp.sin(theta) * W),
+        sp.cos(theta) * W - sp.sin(theta) * W * W * (-1),
+    ],
     "planar_ode": [[sp.pi / 2, 2], (np.pi / 2, 2.0)],
-    "exp_general_axis": [sp.eye(3) + sp.sin(sp.sqrt(N2) * theta) / sp.sqrt(N2) * W
-                         + 2 * sp.sin(sp.sqrt(N2) * theta / 2) ** 2 / N2 * W ** 2],
-    "spatial_angular_velocity": [[1, -sp.sin(t), sp.cos(t)],
-                                 sp.Matrix([sp.cos(t) ** 2 + sp.sin(t) ** 2, -sp.sin(t),
-                                            sp.cos(t)])],
+    "exp_general_axis": [
+        sp.eye(3)
+        + sp.sin(sp.sqrt(N2) * theta) / sp.sqrt(N2) * W
+        + 2 * sp.sin(sp.sqrt(N2) * theta / 2) ** 2 / N2 * W**2
+    ],
+    "spatial_angular_velocity": [
+        [1, -sp.sin(t), sp.cos(t)],
+        sp.Matrix([sp.cos(t) ** 2 + sp.sin(t) ** 2, -sp.sin(t), sp.cos(t)]),
+    ],
     "compose_frames": [[[1, 0, 0], [0, 0, 1], [0, -1, 0]]],
     "chain_vector": [[1, 3, -2], np.array([1.0, 3.0, -2.0])],
     "angle_from_trace": [sp.acos(-sp.Rational(1, 4)), np.arccos(-0.25)],
-    "axis_of_rotation": [np.array([2, 1, 2]) / 3, [sp.Rational(2, 3), sp.Rational(1, 3),
-                                                   sp.Rational(2, 3)]],
+    "axis_of_rotation": [
+        np.array([2, 1, 2]) / 3,
+        [sp.Rational(2, 3), sp.Rational(1, 3), sp.Rational(2, 3)],
+    ],
     "fixed_vs_body": [np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]]) @ np.eye(3)],
-    "composed_angle": [(sp.cos(alpha) + sp.cos(beta) + sp.cos(alpha) * sp.cos(beta) - 1) / 2,
-                       (sp.cos(alpha) + 1) * (sp.cos(beta) + 1) / 2 - 1],
-    "small_angle": [[alpha, alpha * beta / 2, beta],
-                    sp.Matrix([alpha, beta * alpha * sp.Rational(1, 2), beta])],
-    "half_turn_axis": [np.array([6, -2, 3]) / 7, [sp.Rational(6, 7), -sp.Rational(2, 7),
-                                                  sp.Rational(3, 7)]],
+    "composed_angle": [
+        (sp.cos(alpha) + sp.cos(beta) + sp.cos(alpha) * sp.cos(beta) - 1) / 2,
+        (sp.cos(alpha) + 1) * (sp.cos(beta) + 1) / 2 - 1,
+    ],
+    "small_angle": [
+        [alpha, alpha * beta / 2, beta],
+        sp.Matrix([alpha, beta * alpha * sp.Rational(1, 2), beta]),
+    ],
+    "half_turn_axis": [
+        np.array([6, -2, 3]) / 7,
+        [sp.Rational(6, 7), -sp.Rational(2, 7), sp.Rational(3, 7)],
+    ],
 }
 
 
 # ----------------------------------------------------------------------------- the problem set
+
 
 def test_the_problem_set_has_30_exercises_6_per_chapter_and_6_challenges():
     assert len(EXERCISES) >= 30
@@ -152,6 +205,7 @@ def test_stored_fingerprints_are_those_of_the_reference_solutions():
 
 # ----------------------------------------------------------------------------- right answers
 
+
 @pytest.mark.parametrize("name", list(EXERCISES))
 def test_reference_solution_passes(name):
     result = check(name, reference(name)[1])
@@ -167,6 +221,7 @@ def test_equivalent_forms_pass(name, answer):
 
 # ----------------------------------------------------------------------------- mistakes
 
+
 def _solution_texts(name):
     """Printable forms of the expected answer that must never appear in a message."""
     _, answer = reference(name)
@@ -174,8 +229,14 @@ def _solution_texts(name):
     if isinstance(spec, Choice):
         return set()
     if isinstance(spec, Value):
-        vals = np.ravel(np.asarray(sp.Matrix(answer) if not np.isscalar(answer) and not
-                                   isinstance(answer, sp.Expr) else [answer], dtype=float))
+        vals = np.ravel(
+            np.asarray(
+                sp.Matrix(answer)
+                if not np.isscalar(answer) and not isinstance(answer, sp.Expr)
+                else [answer],
+                dtype=float,
+            )
+        )
         return {f"{v:.6g}" for v in vals if abs(v) not in (0.0, 1.0)}
     texts = {str(answer), sp.latex(answer)}
     if isinstance(answer, sp.MatrixBase):
@@ -194,28 +255,37 @@ def test_known_mistake_fails_with_its_own_hint(name, mid, code):
         assert text not in result.message
 
 
-@pytest.mark.parametrize("name, answer, fragment", [
-    ("hat_fifth", -N2 ** 2 * W ** 2, "symmetric, but the right one is skew"),
-    ("hat_fifth", -W, "a factor that changes with the symbols"),
-    ("hat_fifth", -N2 ** 2 * W, "negative of the right one"),
-    ("half_turn", 2 * u * u.T, "multiple of the identity"),
-    ("half_turn", 2 * u * u.T, "ω₁² + ω₂² + ω₃² = 1"),
-    ("inverse_of_product", 2 * B * A.T, "constant multiple"),
-    ("motion_from_points", 2 * np.array([[0, 0, 1], [0, -1, 0], [1, 0, 0]]), "not orthonormal"),
-    ("motion_from_points", [[0, 1, 0], [0, 0, -1], [1, 0, 0]], "det R = −1"),
-    ("compose_frames", np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T, "transpose"),
-    ("angle_from_lengths", 60, "degrees"),
-    ("angle_from_lengths", np.pi / 3 + 2 * np.pi, "full turn"),
-    ("vb_from_va", [3, 1, 0], "component 3 is wrong"),
-    ("unit_tangent", 2 * sp.Matrix([-2 * sp.sin(2 * t), 2 * sp.cos(2 * t), 3]) / sp.sqrt(13),
-     "not a unit vector"),
-    ("unit_tangent", [-sp.sin(t), sp.cos(t), 0], "does not point along ṗ(t)"),
-    ("ode_shifted", [np.log(2), 3], "x(0) = x(1) e^{−a}"),
-    ("spatial_angular_velocity", [1, -sp.sin(t), sp.sqrt(1 - sp.sin(t) ** 2)],
-     "not over their whole range"),
-    ("planar_ode", [np.pi / 2, 3], "component 2 is wrong"),
-    ("which_are_rigid", "b", "not the right set"),
-])
+@pytest.mark.parametrize(
+    "name, answer, fragment",
+    [
+        ("hat_fifth", -(N2**2) * W**2, "symmetric, but the right one is skew"),
+        ("hat_fifth", -W, "a factor that changes with the symbols"),
+        ("hat_fifth", -(N2**2) * W, "negative of the right one"),
+        ("half_turn", 2 * u * u.T, "multiple of the identity"),
+        ("half_turn", 2 * u * u.T, "ω₁² + ω₂² + ω₃² = 1"),
+        ("inverse_of_product", 2 * B * A.T, "constant multiple"),
+        ("motion_from_points", 2 * np.array([[0, 0, 1], [0, -1, 0], [1, 0, 0]]), "not orthonormal"),
+        ("motion_from_points", [[0, 1, 0], [0, 0, -1], [1, 0, 0]], "det R = −1"),
+        ("compose_frames", np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T, "transpose"),
+        ("angle_from_lengths", 60, "degrees"),
+        ("angle_from_lengths", np.pi / 3 + 2 * np.pi, "full turn"),
+        ("vb_from_va", [3, 1, 0], "component 3 is wrong"),
+        (
+            "unit_tangent",
+            2 * sp.Matrix([-2 * sp.sin(2 * t), 2 * sp.cos(2 * t), 3]) / sp.sqrt(13),
+            "not a unit vector",
+        ),
+        ("unit_tangent", [-sp.sin(t), sp.cos(t), 0], "does not point along ṗ(t)"),
+        ("ode_shifted", [np.log(2), 3], "x(0) = x(1) e^{−a}"),
+        (
+            "spatial_angular_velocity",
+            [1, -sp.sin(t), sp.sqrt(1 - sp.sin(t) ** 2)],
+            "not over their whole range",
+        ),
+        ("planar_ode", [np.pi / 2, 3], "component 2 is wrong"),
+        ("which_are_rigid", "b", "not the right set"),
+    ],
+)
 def test_wrong_answer_gets_the_hint_derived_from_its_fingerprint(name, answer, fragment):
     result = check(name, answer)
     assert not result.ok and result.status == "wrong", str(result)
@@ -224,20 +294,36 @@ def test_wrong_answer_gets_the_hint_derived_from_its_fingerprint(name, answer, f
 
 # ----------------------------------------------------------------------------- the asked form
 
-@pytest.mark.parametrize("name, answer, fragment", [
-    ("hat_fifth", W ** 5, "reduce the higher powers first"),
-    ("hat_fifth", hat(omega) ** 5, "you gave explicit entries"),
-    ("half_turn", S.rodrigues().subs(theta, sp.pi), "you gave explicit entries"),
-    ("half_turn", 2 * omega * omega.T - I3, "you gave explicit entries"),
-    ("rodrigues_derivative", W * (I3 + sp.sin(theta) * W + (1 - sp.cos(theta)) * W ** 2),
-     "reduce the higher powers first"),
-    ("rodrigues_derivative", sp.diff(S.rodrigues(), theta), "you gave explicit entries"),
-    ("lagrange_identity", sp.expand(x.cross(y).dot(x.cross(y))), "your answer uses x_1"),
-    ("unit_tangent", sp.diff(sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t]), t)
-     / sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t]).diff(t).norm(), "root"),
-    ("exp_general_axis", I3 + sp.sin(sp.sqrt(N2) * theta) / sp.sqrt(N2) * hat(omega)
-     + (1 - sp.cos(sp.sqrt(N2) * theta)) / N2 * hat(omega) ** 2, "you gave explicit entries"),
-])
+
+@pytest.mark.parametrize(
+    "name, answer, fragment",
+    [
+        ("hat_fifth", W**5, "reduce the higher powers first"),
+        ("hat_fifth", hat(omega) ** 5, "you gave explicit entries"),
+        ("half_turn", S.rodrigues().subs(theta, sp.pi), "you gave explicit entries"),
+        ("half_turn", 2 * omega * omega.T - I3, "you gave explicit entries"),
+        (
+            "rodrigues_derivative",
+            W * (I3 + sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2),
+            "reduce the higher powers first",
+        ),
+        ("rodrigues_derivative", sp.diff(S.rodrigues(), theta), "you gave explicit entries"),
+        ("lagrange_identity", sp.expand(x.cross(y).dot(x.cross(y))), "your answer uses x_1"),
+        (
+            "unit_tangent",
+            sp.diff(sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t]), t)
+            / sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t]).diff(t).norm(),
+            "root",
+        ),
+        (
+            "exp_general_axis",
+            I3
+            + sp.sin(sp.sqrt(N2) * theta) / sp.sqrt(N2) * hat(omega)
+            + (1 - sp.cos(sp.sqrt(N2) * theta)) / N2 * hat(omega) ** 2,
+            "you gave explicit entries",
+        ),
+    ],
+)
 def test_right_value_in_the_wrong_form_is_not_accepted(name, answer, fragment):
     result = check(name, answer)
     assert not result.ok and result.status == "form", str(result)
@@ -247,27 +333,31 @@ def test_right_value_in_the_wrong_form_is_not_accepted(name, answer, fragment):
 
 # ----------------------------------------------------------------------------- malformed input
 
-@pytest.mark.parametrize("name, answer, status, fragment", [
-    ("hat_fifth", None, "no answer", "answer_hat_fifth"),
-    ("lagrange_identity", "xx*yy - xy**2", "malformed", "string"),
-    ("vb_from_va", [1, 2], "malformed", "expected a 3-vector, got a 2-vector"),
-    ("motion_from_points", np.zeros((3, 3, 3)), "malformed", "shape (3, 3, 3)"),
-    ("vb_from_va", [0, sp.nan, 3], "malformed", "nan or infinity"),
-    ("vb_from_va", [0, float("inf"), 3], "malformed", "nan or infinity"),
-    ("vb_from_va", [0, sp.sqrt(2) * sp.I, 3], "malformed", "complex"),
-    ("vb_from_va", [0, sp.Symbol("s"), 3], "malformed", "a number is expected"),
-    ("vb_from_va", np.array([True, False, True]), "malformed", "truth values"),
-    ("vb_from_va", [[1, 2], [3]], "malformed", "different lengths"),
-    ("composed_angle", sp.Eq(sp.Symbol("x"), 1), "malformed", ".rhs"),
-    ("composed_angle", sp.Function("f")(alpha), "not allowed", "not allowed here"),
-    ("composed_angle", sp.cos(sp.Symbol("alpha")), "malformed", "not the one of the course"),
-    ("composed_angle", sp.cos(theta), "malformed", "does not belong"),
-    ("composed_angle", alpha / (beta - beta), "malformed", "nan or infinity"),
-    ("composed_angle", sp.sqrt(-1 - alpha ** 2), "malformed", "complex"),
-    ("which_are_rigid", {"b", "z"}, "malformed", "not one of the letters"),
-    ("which_are_rigid", 3, "malformed", "set of letters"),
-    ("two_mirrors", lambda: 0, "malformed", "function"),
-])
+
+@pytest.mark.parametrize(
+    "name, answer, status, fragment",
+    [
+        ("hat_fifth", None, "no answer", "answer_hat_fifth"),
+        ("lagrange_identity", "xx*yy - xy**2", "malformed", "string"),
+        ("vb_from_va", [1, 2], "malformed", "expected a 3-vector, got a 2-vector"),
+        ("motion_from_points", np.zeros((3, 3, 3)), "malformed", "shape (3, 3, 3)"),
+        ("vb_from_va", [0, sp.nan, 3], "malformed", "nan or infinity"),
+        ("vb_from_va", [0, float("inf"), 3], "malformed", "nan or infinity"),
+        ("vb_from_va", [0, sp.sqrt(2) * sp.I, 3], "malformed", "complex"),
+        ("vb_from_va", [0, sp.Symbol("s"), 3], "malformed", "a number is expected"),
+        ("vb_from_va", np.array([True, False, True]), "malformed", "truth values"),
+        ("vb_from_va", [[1, 2], [3]], "malformed", "different lengths"),
+        ("composed_angle", sp.Eq(sp.Symbol("x"), 1), "malformed", ".rhs"),
+        ("composed_angle", sp.Function("f")(alpha), "not allowed", "not allowed here"),
+        ("composed_angle", sp.cos(sp.Symbol("alpha")), "malformed", "not the one of the course"),
+        ("composed_angle", sp.cos(theta), "malformed", "does not belong"),
+        ("composed_angle", alpha / (beta - beta), "malformed", "nan or infinity"),
+        ("composed_angle", sp.sqrt(-1 - alpha**2), "malformed", "complex"),
+        ("which_are_rigid", {"b", "z"}, "malformed", "not one of the letters"),
+        ("which_are_rigid", 3, "malformed", "set of letters"),
+        ("two_mirrors", lambda: 0, "malformed", "function"),
+    ],
+)
 def test_malformed_answer_gets_a_clear_message(name, answer, status, fragment):
     result = check(name, answer)
     assert not result.ok and result.status == status, str(result)
@@ -276,12 +366,14 @@ def test_malformed_answer_gets_a_clear_message(name, answer, status, fragment):
 
 def test_a_string_answer_is_never_evaluated():
     import builtins
+
     check("lagrange_identity", "__import__('builtins').setattr(__import__('builtins'), 'PW', 1)")
     assert not hasattr(builtins, "PW")
 
 
 def test_check_result_is_a_verdict_with_a_status():
     from course_lib._verdict import Verdict
+
     r = check("vb_from_va", [3, 1, 2])
     assert isinstance(r, Verdict) and isinstance(r, CheckResult)
     assert bool(r) and r._repr_markdown_() == "**✓** vb_from_va: correct."
@@ -289,12 +381,12 @@ def test_check_result_is_a_verdict_with_a_status():
 
 # ----------------------------------------------------------------------------- properties
 
+
 @settings(max_examples=20, deadline=None)
 @given(st.integers(-3, 3), st.lists(st.integers(-2, 2), min_size=9, max_size=9))
 def test_adding_what_vanishes_on_the_unit_sphere_keeps_an_answer_right(k, entries):
     extra = k * (N2 - 1) * sp.Matrix(3, 3, entries)
-    assert check("half_turn", 2 * u * u.T - sp.Identity(3) + extra).status in ("correct",
-                                                                                "form")
+    assert check("half_turn", 2 * u * u.T - sp.Identity(3) + extra).status in ("correct", "form")
 
 
 @settings(max_examples=25, deadline=None)
@@ -311,15 +403,16 @@ def test_numbers_within_tol_pass_and_numbers_4_tol_away_fail(size, which):
 @settings(max_examples=20, deadline=None)
 @given(st.floats(0.1, 5.0).filter(lambda c: abs(c - 1) > 1e-3))
 def test_a_scaled_symbolic_answer_is_a_constant_multiple(c):
-    result = check("rodrigues_derivative", sp.Float(c) * (sp.cos(theta) * W + sp.sin(theta) * W ** 2))
+    result = check("rodrigues_derivative", sp.Float(c) * (sp.cos(theta) * W + sp.sin(theta) * W**2))
     assert not result.ok and "constant multiple" in result.message
 
 
 # ----------------------------------------------------------------------------- regressions
 
+
 def test_regression_tolerance_cannot_be_set_by_the_student():
     with pytest.raises(TypeError):
-        check("vb_from_va", 0, tol=1e6)              # the old check(name, 0, tol=1e6) passed
+        check("vb_from_va", 0, tol=1e6)  # the old check(name, 0, tol=1e6) passed
     assert "tol" not in inspect.signature(check).parameters
 
 
@@ -327,6 +420,7 @@ def test_regression_sympy_subclass_with_its_own_add_is_not_allowed():
     class Zero(sp.Symbol):
         def __add__(self, other):
             return sp.Integer(0)
+
         __radd__ = __sub__ = __rsub__ = __add__
 
     class ZeroMatrix(sp.ImmutableMatrix):
@@ -360,16 +454,19 @@ def _cos_angle(c_alpha):
 RIGHT_COS = _cos_angle(sp.cos(alpha))
 
 
-@pytest.mark.parametrize("fake", [
-    _cos_angle(sum((-1) ** k * alpha ** (2 * k) / sp.factorial(2 * k) for k in range(9))),
-    _cos_angle(sum((-1) ** k * alpha ** (2 * k) / sp.factorial(2 * k) for k in range(14))),
-    RIGHT_COS + sp.floor(alpha ** 2 / 1000),
-    RIGHT_COS * (1 + sp.Heaviside(alpha - 10)),
-    RIGHT_COS + sp.Mod(alpha, 100) - alpha,
-    sp.Piecewise((RIGHT_COS, alpha < 3), (0, True)),
-    sp.Integral(sp.diff(RIGHT_COS, alpha), alpha),
-    sp.Abs(RIGHT_COS),
-])
+@pytest.mark.parametrize(
+    "fake",
+    [
+        _cos_angle(sum((-1) ** k * alpha ** (2 * k) / sp.factorial(2 * k) for k in range(9))),
+        _cos_angle(sum((-1) ** k * alpha ** (2 * k) / sp.factorial(2 * k) for k in range(14))),
+        RIGHT_COS + sp.floor(alpha**2 / 1000),
+        RIGHT_COS * (1 + sp.Heaviside(alpha - 10)),
+        RIGHT_COS + sp.Mod(alpha, 100) - alpha,
+        sp.Piecewise((RIGHT_COS, alpha < 3), (0, True)),
+        sp.Integral(sp.diff(RIGHT_COS, alpha), alpha),
+        sp.Abs(RIGHT_COS),
+    ],
+)
 def test_regression_truncated_series_and_piecewise_fakes_fail(fake):
     assert check("composed_angle", RIGHT_COS).ok
     result = check("composed_angle", fake)
@@ -379,10 +476,12 @@ def test_regression_truncated_series_and_piecewise_fakes_fail(fake):
 def test_regression_truncated_rodrigues_series_fails():
     s = sum((-1) ** k * theta ** (2 * k + 1) / sp.factorial(2 * k + 1) for k in range(5))
     c = sum((-1) ** k * theta ** (2 * k + 2) / sp.factorial(2 * k + 2) for k in range(5))
-    result = check("rodrigues_derivative", sp.diff(s, theta) * W + sp.diff(c, theta) * W ** 2)
+    result = check("rodrigues_derivative", sp.diff(s, theta) * W + sp.diff(c, theta) * W**2)
     assert not result.ok and "whole range" in result.message
-    result = check("rodrigues_derivative", sp.cos(theta) * W + sp.sin(theta) * W ** 2
-                   + sp.floor(theta ** 2 / 10) * sp.Identity(3))
+    result = check(
+        "rodrigues_derivative",
+        sp.cos(theta) * W + sp.sin(theta) * W**2 + sp.floor(theta**2 / 10) * sp.Identity(3),
+    )
     assert result.status == "not allowed"
 
 
@@ -415,7 +514,7 @@ def test_regression_no_expected_answer_is_readable_from_the_package():
     for name in ("hat_fifth", "half_turn", "exp_general_axis", "bac_cab", "composed_angle"):
         for sol in _solution_texts(name):
             assert sol not in text, (name, sol)
-    for chapter in (1, 2, 3, 4):                     # no line of any worked solution either
+    for chapter in (1, 2, 3, 4):  # no line of any worked solution either
         for code in F.solutions(chapter)[0].values():
             for line in code.splitlines():
                 given = any(line.strip() in ex.statement for ex in EXERCISES.values())
@@ -423,23 +522,28 @@ def test_regression_no_expected_answer_is_readable_from_the_package():
                     assert line.strip() not in text, line
 
 
-@pytest.mark.parametrize("name, hostile", [
-    ("bac_cab", [(sum(x) + sum(y)) ** 16, 0]),
-    ("lagrange_identity", (xx + yy + xy + 1) ** 30),
-    ("composed_angle", (alpha + beta + 1) ** 200),
-    ("composed_angle", sp.Integral(sp.exp(-alpha ** 2) * sp.sin(beta * alpha) ** 9,
-                                   (alpha, 0, beta))),
-    ("hat_fifth", W ** 40),
-    ("hat_fifth", sp.MatMul(*([W] * 30))),
-    ("composed_angle", sp.Add(*[sp.cos(k * alpha) for k in range(3000)])),
-    ("exp_general_axis", sp.exp(sp.exp(sp.exp(theta) ** 30)) * W),
-])
+@pytest.mark.parametrize(
+    "name, hostile",
+    [
+        ("bac_cab", [(sum(x) + sum(y)) ** 16, 0]),
+        ("lagrange_identity", (xx + yy + xy + 1) ** 30),
+        ("composed_angle", (alpha + beta + 1) ** 200),
+        (
+            "composed_angle",
+            sp.Integral(sp.exp(-(alpha**2)) * sp.sin(beta * alpha) ** 9, (alpha, 0, beta)),
+        ),
+        ("hat_fifth", W**40),
+        ("hat_fifth", sp.MatMul(*([W] * 30))),
+        ("composed_angle", sp.Add(*[sp.cos(k * alpha) for k in range(3000)])),
+        ("exp_general_axis", sp.exp(sp.exp(sp.exp(theta) ** 30)) * W),
+    ],
+)
 def test_regression_hostile_answers_get_a_message_not_a_hang_or_internal_error(name, hostile):
     result = check(name, hostile)
     assert not result.ok
     assert result.status in ("too complex", "not allowed", "wrong", "malformed"), str(result)
     assert "could not check" not in result.message
-    assert not re.search(r"\d\.\d{5,}", result.message)      # no sample point leaks
+    assert not re.search(r"\d\.\d{5,}", result.message)  # no sample point leaks
 
 
 def test_readme_states_the_exercise_count_and_points_of_the_bank():
@@ -449,16 +553,21 @@ def test_readme_states_the_exercise_count_and_points_of_the_bank():
     for chapter in (1, 2, 3, 4):
         exs = exercises(chapter)
         levels = [sum(ex.level == lv for ex in exs) for lv in ("warm-up", "core", "challenge")]
-        row = " | ".join(map(str, levels)) + f" | {len(exs)} exercises, " \
-                                              f"{sum(ex.points for ex in exs)} points |"
+        row = (
+            " | ".join(map(str, levels)) + f" | {len(exs)} exercises, "
+            f"{sum(ex.points for ex in exs)} points |"
+        )
         assert row in text, row
 
 
-@pytest.mark.parametrize("hostile", [
-    sp.sin(sp.Integer(10) ** (10 ** 4)),            # mpmath would need 10⁴ digits
-    sp.sin(sp.exp(sp.exp(50))),                     # ... or e^(e^50) digits: a hang
-    sp.Float("1e100000"),
-])
+@pytest.mark.parametrize(
+    "hostile",
+    [
+        sp.sin(sp.Integer(10) ** (10**4)),  # mpmath would need 10⁴ digits
+        sp.sin(sp.exp(sp.exp(50))),  # ... or e^(e^50) digits: a hang
+        sp.Float("1e100000"),
+    ],
+)
 def test_regression_numeric_answers_are_evaluated_in_double_precision_not_mpmath(hostile):
     result = check("two_mirrors", hostile)
     assert not result.ok and result.status in ("too complex", "malformed"), str(result)
@@ -477,8 +586,12 @@ def test_regression_no_method_of_a_foreign_class_is_called():
             return 0
 
     spy = Spy("s")
-    for name, answer in (("ode_shifted", spy), ("unit_tangent", [spy, 0, 0]),
-                         ("two_mirrors", spy), ("lagrange_identity", (spy,))):
+    for name, answer in (
+        ("ode_shifted", spy),
+        ("unit_tangent", [spy, 0, 0]),
+        ("two_mirrors", spy),
+        ("lagrange_identity", (spy,)),
+    ):
         calls.clear()
         result = check(name, answer)
         assert result.status == "not allowed", str(result)
@@ -486,6 +599,7 @@ def test_regression_no_method_of_a_foreign_class_is_called():
 
 
 # ----------------------------------------------------------------------------- regressions
+
 
 @pytest.mark.parametrize("dtype", [np.float32, np.complex64])
 def test_a_correct_float32_answer_is_not_reported_as_wrong_entries(dtype):
@@ -499,12 +613,14 @@ def test_a_correct_float32_answer_is_not_reported_as_wrong_entries(dtype):
     assert "single precision" in listed.message
     assert check("half_turn_axis", right.astype(np.float64)).ok
     wrong = check("half_turn_axis", (right + [0, 0, 1e-3]).astype(dtype))
-    assert wrong.message.startswith("half_turn_axis: component 3 is wrong. Also, your answer is "
-                                    "stored in single precision"), str(wrong)
+    assert wrong.message.startswith(
+        "half_turn_axis: component 3 is wrong. Also, your answer is stored in single precision"
+    ), str(wrong)
 
 
 def test_regression_a_huge_float32_answer_is_checked_quickly():
     import time
+
     start = time.perf_counter()
     result = check("chain_vector", np.array([1e30, 3, -2], dtype=np.float32))
     assert time.perf_counter() - start < 1.0 and "component 1 is wrong" in result.message

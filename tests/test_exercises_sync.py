@@ -14,17 +14,19 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-from tools import sync_exercises as sync  # noqa: E402
-
 from course_lib.exercises import exercises  # noqa: E402
+from tools import sync_exercises as sync  # noqa: E402
 
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("0[1-9]_*.ipynb"))
 MARKER_WORDS = ("BEGIN SOLUTION", "END SOLUTION", "HIDDEN TESTS")
 
 
 def section(nb):
-    start = next(i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"
-                 and c.source.lstrip().startswith("## Exercises"))
+    start = next(
+        i
+        for i, c in enumerate(nb.cells)
+        if c.cell_type == "markdown" and c.source.lstrip().startswith("## Exercises")
+    )
     return nb.cells[start:]
 
 
@@ -32,7 +34,7 @@ def section(nb):
 def test_real_notebook_section_is_what_the_bank_writes(path):
     nb = nbformat.read(path, as_version=4)
     again = sync.sync(copy.deepcopy(nb), sync.chapter_of(path))
-    assert nbformat.writes(again) == nbformat.writes(nb)          # idempotent, up to date
+    assert nbformat.writes(again) == nbformat.writes(nb)  # idempotent, up to date
     for ex in exercises(sync.chapter_of(path)):
         sources = [c.source for c in section(nb)]
         assert ex.markdown() in sources
@@ -68,7 +70,7 @@ def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chap
     for cell in nb.cells:
         if cell.metadata["nbgrader"]["solution"]:
             continue
-        for word in MARKER_WORDS:                 # nbgrader matches them anywhere in a line
+        for word in MARKER_WORDS:  # nbgrader matches them anywhere in a line
             assert word not in cell.source.upper()
 
 

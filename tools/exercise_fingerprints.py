@@ -1,7 +1,7 @@
 """Make the checker's fingerprints from the instructor's reference solutions.
 
-    python tools/exercise_fingerprints.py            # write course_lib/exercise_bank/fingerprints.json
-    python tools/exercise_fingerprints.py --check    # exit 1 if the stored file is out of date
+    python tools/exercise_fingerprints.py          # course_lib/exercise_bank/fingerprints.json
+    python tools/exercise_fingerprints.py --check  # exit 1 if that file is out of date
 
 For every exercise of the bank, runs the chapter's set-up code and the reference solution of
 ``tools/solutions/chNN.py`` (the code the notebook's answer cell holds between the solution
@@ -102,8 +102,11 @@ def dumps(data):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--check", action="store_true",
-                        help="only compare with the stored file (exit 1 if it differs)")
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="only compare with the stored file (exit 1 if it differs)",
+    )
     args = parser.parse_args(argv)
     text = dumps(build())
     if args.check:

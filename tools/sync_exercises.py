@@ -46,55 +46,94 @@ another form is not accepted yet. The symbols come from `course_lib.exercises`."
 
 
 def _nbgrader(grade_id, *, grade=False, solution=False, locked=False, points=None):
-    meta = {"grade": grade, "grade_id": grade_id, "locked": locked, "schema_version": 3,
-            "solution": solution, "task": False}
+    meta = {
+        "grade": grade,
+        "grade_id": grade_id,
+        "locked": locked,
+        "schema_version": 3,
+        "solution": solution,
+        "task": False,
+    }
     if points is not None:
         meta["points"] = points
     return {"nbgrader": meta}
 
 
 def _solution_source(ex, code):
-    return "\n".join([f"{ex.answer_variable} = None", MARK.strip() + " BEGIN SOLUTION",
-                      code.rstrip(), MARK.strip() + " END SOLUTION"])
+    return "\n".join(
+        [
+            f"{ex.answer_variable} = None",
+            MARK.strip() + " BEGIN SOLUTION",
+            code.rstrip(),
+            MARK.strip() + " END SOLUTION",
+        ]
+    )
 
 
 def _check_source(ex):
-    return (f"result = check(\"{ex.name}\", {ex.answer_variable})\n"
-            "assert result.ok, result.message\n"
-            "result")
+    return (
+        f'result = check("{ex.name}", {ex.answer_variable})\n'
+        "assert result.ok, result.message\n"
+        "result"
+    )
 
 
 def section_cells(chapter):
     """The cells of a chapter's exercise section, as (kind, id, source, metadata) tuples."""
     bank = exercise_bank.chapter_module(chapter)
     sols, _ = solutions(chapter)
-    cells = [("markdown", f"ch{chapter}-exercises", INTRO,
-              _nbgrader(f"ch{chapter}-exercises", locked=True)),
-             ("code", f"ch{chapter}-exercises-setup", bank.SETUP,
-              _nbgrader(f"ch{chapter}-exercises-setup", locked=True))]
+    cells = [
+        (
+            "markdown",
+            f"ch{chapter}-exercises",
+            INTRO,
+            _nbgrader(f"ch{chapter}-exercises", locked=True),
+        ),
+        (
+            "code",
+            f"ch{chapter}-exercises-setup",
+            bank.SETUP,
+            _nbgrader(f"ch{chapter}-exercises-setup", locked=True),
+        ),
+    ]
     for ex in exercises(chapter):
         cells += [
-            ("markdown", f"{ex.name}-statement", ex.markdown(),
-             _nbgrader(f"{ex.name}-statement", locked=True)),
-            ("code", f"{ex.name}-answer", _solution_source(ex, sols[ex.name]),
-             _nbgrader(f"{ex.name}-answer", solution=True)),
-            ("code", f"{ex.name}-check", _check_source(ex),
-             _nbgrader(f"{ex.name}-check", grade=True, locked=True, points=ex.points)),
+            (
+                "markdown",
+                f"{ex.name}-statement",
+                ex.markdown(),
+                _nbgrader(f"{ex.name}-statement", locked=True),
+            ),
+            (
+                "code",
+                f"{ex.name}-answer",
+                _solution_source(ex, sols[ex.name]),
+                _nbgrader(f"{ex.name}-answer", solution=True),
+            ),
+            (
+                "code",
+                f"{ex.name}-check",
+                _check_source(ex),
+                _nbgrader(f"{ex.name}-check", grade=True, locked=True, points=ex.points),
+            ),
         ]
     return cells
 
 
 def _make_cell(kind, cid, source, meta, old):
-    if old is not None and old.cell_type == kind and old.source == source and \
-            old.get("metadata", {}).get("nbgrader") == meta["nbgrader"]:
-        new = old                                  # unchanged: keep its outputs
+    if (
+        old is not None
+        and old.cell_type == kind
+        and old.source == source
+        and old.get("metadata", {}).get("nbgrader") == meta["nbgrader"]
+    ):
+        new = old  # unchanged: keep its outputs
     elif kind == "markdown":
         new = nbformat.v4.new_markdown_cell(source)
     else:
         new = nbformat.v4.new_code_cell(source)
     new.id = cid
-    new.metadata = {**{k: v for k, v in new.get("metadata", {}).items() if k != "nbgrader"},
-                    **meta}
+    new.metadata = {**{k: v for k, v in new.get("metadata", {}).items() if k != "nbgrader"}, **meta}
     return new
 
 
@@ -107,11 +146,19 @@ def chapter_of(path):
 
 def sync(nb, chapter):
     """The notebook with its exercise section rewritten (a new cell list; nb is updated)."""
-    start = next((i for i, c in enumerate(nb.cells) if c.cell_type == "markdown"
-                  and c.source.lstrip().startswith(HEADING)), len(nb.cells))
+    start = next(
+        (
+            i
+            for i, c in enumerate(nb.cells)
+            if c.cell_type == "markdown" and c.source.lstrip().startswith(HEADING)
+        ),
+        len(nb.cells),
+    )
     old = {c.get("id"): c for c in nb.cells[start:]}
-    new = [_make_cell(kind, cid, src, meta, old.get(cid))
-           for kind, cid, src, meta in section_cells(chapter)]
+    new = [
+        _make_cell(kind, cid, src, meta, old.get(cid))
+        for kind, cid, src, meta in section_cells(chapter)
+    ]
     nb.cells = nb.cells[:start] + new
     return nb
 
@@ -137,8 +184,10 @@ def main(argv=None):
         out = nbformat.writes(nb) + ("\n" if text.endswith("\n") else "")
         if out != text:
             path.write_text(out)
-        print(f"{path}: chapter {chapter}, {len(exercises(chapter))} exercises"
-              + ("" if out != text else " (unchanged)"))
+        print(
+            f"{path}: chapter {chapter}, {len(exercises(chapter))} exercises"
+            + ("" if out != text else " (unchanged)")
+        )
     return status
 
 

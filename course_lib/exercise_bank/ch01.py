@@ -6,20 +6,27 @@ from course_lib.exercises._model import Choice, Exercise, Expr, Value
 from course_lib.symbolic import t, x, xx, xy, y, yy, z
 
 CHAPTER = 1
-SETUP = ("import numpy as np\nimport sympy as sp\n"
-         "from course_lib.exercises import check, t, x, y, z, xx, yy, xy")
+SETUP = (
+    "import numpy as np\nimport sympy as sp\n"
+    "from course_lib.exercises import check, t, x, y, z, xx, yy, xy"
+)
 
-_HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])      # p(t), as in the statement
+_HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])  # p(t), as in the statement
 _TANGENT_PROPERTIES = (
     (lambda M: M.dot(M) - 1, "your vector is not a unit vector: divide ṗ by its length ‖ṗ‖."),
-    (lambda M: M.cross(_HELIX.diff(t)),
-     "your vector has length 1 but does not point along ṗ(t): differentiate each component "
-     "(the chain rule brings out the 2 of cos 2t and sin 2t)."),
+    (
+        lambda M: M.cross(_HELIX.diff(t)),
+        "your vector has length 1 but does not point along ṗ(t): differentiate each component "
+        "(the chain rule brings out the 2 of cos 2t and sin 2t).",
+    ),
 )
 
 EXERCISES = [
     Exercise(
-        name="coords_by_projection", chapter=1, number=1, level="warm-up",
+        name="coords_by_projection",
+        chapter=1,
+        number=1,
+        level="warm-up",
         title="Coordinates by projection",
         statement=r"""
 A right-handed orthonormal frame has its origin at $o = (1,\ 1,\ 0)$, and its three axes point
@@ -31,19 +38,22 @@ Matrix).
 """,
         answer=Value(shape=(3,)),
         tip="First make the basis vectors unit vectors eᵢ; each coordinate is then the "
-            "projection (p − o) · eᵢ.",
+        "projection (p − o) · eᵢ.",
         mistakes={
             "weights": "you combined the basis vectors with the entries of p − o as weights; a "
-                       "coordinate is a projection, the dot product of p − o with one basis "
-                       "vector.",
+            "coordinate is a projection, the dot product of p − o with one basis "
+            "vector.",
             "no_origin": "you projected p itself; the frame's origin is o, so project the "
-                         "vector p − o from the origin to the point.",
+            "vector p − o from the origin to the point.",
             "unnormalized": "the given directions are not unit vectors: divide each by its "
-                            "length before projecting (equation (1)).",
+            "length before projecting (equation (1)).",
         },
     ),
     Exercise(
-        name="angle_from_lengths", chapter=1, number=2, level="warm-up",
+        name="angle_from_lengths",
+        chapter=1,
+        number=2,
+        level="warm-up",
         title="An angle from three lengths",
         statement=r"""
 Two vectors have the lengths $\lVert x\rVert = 3$ and $\lVert y\rVert = 4$, and
@@ -56,11 +66,14 @@ Give the angle in radians, in $[0, \pi]$.
         mistakes={
             "cosine": "that is the cosine of the angle; the exercise asks for the angle itself.",
             "sign": "sign: ‖x − y‖² = ‖x‖² + ‖y‖² − 2xᵀy, so a short x − y means a positive "
-                    "inner product and an acute angle.",
+            "inner product and an acute angle.",
         },
     ),
     Exercise(
-        name="which_are_rigid", chapter=1, number=3, level="core",
+        name="which_are_rigid",
+        chapter=1,
+        number=3,
+        level="core",
         title="Which maps are rigid body transformations?",
         statement=r"""
 Which of these maps $g:\mathbb{R}^3\to\mathbb{R}^3$ are rigid body transformations in the sense
@@ -78,18 +91,21 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
 """,
         answer=Choice(letters="abcdef"),
         tip="Every map here keeps distances; test the cross product on e₁, e₂: is "
-            "g_*(e₁) × g_*(e₂) = g_*(e₃)? (For g(p) = Mp + d that is det M = +1.)",
+        "g_*(e₁) × g_*(e₂) = g_*(e₃)? (For g(p) = Mp + d that is det M = +1.)",
         mistakes={
             "mirrors": "some of your maps keep every distance but turn a right-handed frame into "
-                       "a left-handed one: compare g_*(e₁) × g_*(e₂) with g_*(e₃).",
+            "a left-handed one: compare g_*(e₁) × g_*(e₂) with g_*(e₃).",
             "translation": "a translation keeps distances and cross products of vectors too "
-                           "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
+            "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
             "two_mirrors": "two reflections one after the other are not a reflection: each "
-                           "flips the handedness, and the second flips it back.",
+            "flips the handedness, and the second flips it back.",
         },
     ),
     Exercise(
-        name="unit_tangent", chapter=1, number=4, level="core",
+        name="unit_tangent",
+        chapter=1,
+        number=4,
+        level="core",
         title="The unit tangent of a helix",
         statement=r"""
 A particle follows the helix $p(t) = (\cos 2t,\ \sin 2t,\ 3t)$ (a trajectory as in equation
@@ -98,13 +114,18 @@ A particle follows the helix $p(t) = (\cos 2t,\ \sin 2t,\ 3t)$ (a trajectory as 
 """,
         answer=Expr(shape=(3,), domain=(t,), no_roots=True),
         tip="Differentiate each component (mind the chain rule), then simplify ‖ṗ‖ with "
-            "sin² + cos² = 1.",
-        mistakes={"velocity": "that is the velocity ṗ; divide it by its length ‖ṗ‖ (a unit "
-                              "vector has length 1)."},
+        "sin² + cos² = 1.",
+        mistakes={
+            "velocity": "that is the velocity ṗ; divide it by its length ‖ṗ‖ (a unit "
+            "vector has length 1)."
+        },
         properties=_TANGENT_PROPERTIES,
     ),
     Exercise(
-        name="lagrange_identity", chapter=1, number=5, level="core",
+        name="lagrange_identity",
+        chapter=1,
+        number=5,
+        level="core",
         title="The length of a cross product",
         statement=r"""
 For the generic vectors `x`, `y`, write $\lVert x \times y\rVert^2$ in terms of the three
@@ -114,11 +135,15 @@ formula. Give a scalar expression in `xx`, `yy`, `xy`.
 """,
         answer=Expr(shape=(), domain=tuple(x) + tuple(y), allowed=(xx, yy, xy)),
         tip="Try x = y (the cross product vanishes) and x ⊥ y (it has length ‖x‖‖y‖).",
-        mistakes={"plus": "sign: for x = y the cross product is 0, so your two terms must "
-                          "cancel there."},
+        mistakes={
+            "plus": "sign: for x = y the cross product is 0, so your two terms must cancel there."
+        },
     ),
     Exercise(
-        name="bac_cab", chapter=1, number=6, level="challenge",
+        name="bac_cab",
+        chapter=1,
+        number=6,
+        level="challenge",
         title="A double cross product",
         statement=r"""
 For the generic vectors `x`, `y`, `z`, the vector $x \times (y \times z)$ lies in the plane of
@@ -131,7 +156,10 @@ with sympy). Give the pair $(\alpha, \beta)$ as a list of two expressions.
         mistakes={"swapped": "you swapped α and β: α is the coefficient of y."},
     ),
     Exercise(
-        name="motion_from_points", chapter=1, number=7, level="challenge",
+        name="motion_from_points",
+        chapter=1,
+        number=7,
+        level="challenge",
         title="A motion from three points",
         statement=r"""
 A rigid body transformation $g(p) = Rp + d$ maps the origin to $(1, 2, 3)$, the point
@@ -143,7 +171,7 @@ Give a 3x3 array or matrix.
         tip="R eᵢ = g(eᵢ) − g(0); the third column follows from the first two.",
         mistakes={
             "mirror": "your third column points the wrong way (det R = −1): it is "
-                      "R e₁ × R e₂, in that order.",
+            "R e₁ × R e₂, in that order.",
             "points": "subtract g(0) = d first: the columns of R are g(eᵢ) − g(0), not g(eᵢ).",
         },
     ),

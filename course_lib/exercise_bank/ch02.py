@@ -4,12 +4,17 @@ from course_lib.exercises._model import Choice, Exercise, Expr, Value
 from course_lib.symbolic import A, B, R, X, Y, d
 
 CHAPTER = 2
-SETUP = ("import numpy as np\nimport sympy as sp\n"
-         "from course_lib.exercises import check, hat, A, B, R, X, Y, d, x, y")
+SETUP = (
+    "import numpy as np\nimport sympy as sp\n"
+    "from course_lib.exercises import check, hat, A, B, R, X, Y, d, x, y"
+)
 
 EXERCISES = [
     Exercise(
-        name="which_in_so3", chapter=2, number=1, level="warm-up",
+        name="which_in_so3",
+        chapter=2,
+        number=1,
+        level="warm-up",
         title="Which products are rotations?",
         statement=r"""
 Let $R, S \in$ SO(3) be any two rotations and $M$ any reflection ($M^TM = I$, $\det M = -1$).
@@ -22,16 +27,19 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
 """,
         answer=Choice(letters="abcdef"),
         tip="For each, check XᵀX = I (Proposition 3) and det X = +1 (Proposition 4): use "
-            "(XY)ᵀ = YᵀXᵀ, det(XY) = det X det Y and det(−X) = (−1)³ det X.",
+        "(XY)ᵀ = YᵀXᵀ, det(XY) = det X det Y and det(−X) = (−1)³ det X.",
         mistakes={
             "orthogonal": "XᵀX = I is not enough: a rotation also has det = +1 "
-                          "(Proposition 4); −R and MR have det = −1.",
+            "(Proposition 4); −R and MR have det = −1.",
             "two_reflections": "M R M has two factors of det −1: det(MRM) = (−1)(+1)(−1) = +1, "
-                               "and it is orthogonal as a product of orthogonal matrices.",
+            "and it is orthogonal as a product of orthogonal matrices.",
         },
     ),
     Exercise(
-        name="vb_from_va", chapter=2, number=2, level="warm-up",
+        name="vb_from_va",
+        chapter=2,
+        number=2,
+        level="warm-up",
         title="From a-coordinates to b-coordinates",
         statement=r"""
 Two of frame $B$'s axes, written in frame $A$, are $x_{ab} = (0, 0, 1)$ and
@@ -40,16 +48,19 @@ $A$. Find its coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-
 """,
         answer=Value(shape=(3,)),
         tip="The third axis is z_ab = x_ab × y_ab; then v_a = R_ab v_b, and R_ab⁻¹ = R_abᵀ "
-            "(Proposition 5).",
+        "(Proposition 5).",
         mistakes={
             "direction": "R_ab turns b-coordinates into a-coordinates (v_a = R_ab v_b); "
-                         "you need the other direction, R_ba = R_abᵀ.",
+            "you need the other direction, R_ba = R_abᵀ.",
             "left_handed": "your z_ab points the wrong way: a right-handed frame has "
-                           "z_ab = x_ab × y_ab, in that order.",
+            "z_ab = x_ab × y_ab, in that order.",
         },
     ),
     Exercise(
-        name="complete_rotation", chapter=2, number=3, level="core",
+        name="complete_rotation",
+        chapter=2,
+        number=3,
+        level="core",
         title="Complete a rotation matrix",
         statement=r"""
 Find the three missing entries $(a, b, c)$ that make
@@ -59,12 +70,17 @@ $(a, b, c)$, and check $\det R = +1$.
 """,
         answer=Value(shape=(3,)),
         tip="Unit columns fix |a|, |b| and |c|; perpendicular columns (r₁ · r₃ = 0, "
-            "r₁ · r₂ = 0) then fix their signs.",
-        mistakes={"abs": "the unit lengths fix only |a|, |b|, |c|: the signs come from the "
-                         "orthogonality of the columns, r₁ · r₃ = 0 and r₁ · r₂ = 0."},
+        "r₁ · r₂ = 0) then fix their signs.",
+        mistakes={
+            "abs": "the unit lengths fix only |a|, |b|, |c|: the signs come from the "
+            "orthogonality of the columns, r₁ · r₃ = 0 and r₁ · r₂ = 0."
+        },
     ),
     Exercise(
-        name="inverse_of_product", chapter=2, number=4, level="core",
+        name="inverse_of_product",
+        chapter=2,
+        number=4,
+        level="core",
         title="Undoing two rotations",
         statement=r"""
 Let `A` stand for $R_{ab}$ and `B` for $R_{cb}$ (two rotation matrices, `MatrixSymbol`s; mind
@@ -74,16 +90,18 @@ expression in `A`, `B` (products and `.T`).
 """,
         answer=Expr(shape=(3, 3), allowed=(A, B), matrix_degree=2),
         tip="For a rotation R⁻¹ = Rᵀ, so R_ba = R_abᵀ; the inner subscripts of a product "
-            "must match (R_cb R_ba).",
+        "must match (R_cb R_ba).",
         mistakes={
             "order": "order: the inner subscripts must meet, R_cb R_ba, so B comes first.",
-            "forward": "that is R_ac; the exercise asks for the opposite direction, "
-                       "R_ca = R_acᵀ.",
+            "forward": "that is R_ac; the exercise asks for the opposite direction, R_ca = R_acᵀ.",
             "bc": "B stands for R_cb, not R_bc: here R_bc = Bᵀ, and R_ca = R_cb R_ba.",
         },
     ),
     Exercise(
-        name="rigid_inverse", chapter=2, number=5, level="core",
+        name="rigid_inverse",
+        chapter=2,
+        number=5,
+        level="core",
         title="The inverse of a rigid motion",
         statement=r"""
 A rigid body transformation is $g(p) = Rp + d$ with a rotation $R$ (`R`) and a translation
@@ -99,7 +117,10 @@ Give a 3x1 matrix expression.
         },
     ),
     Exercise(
-        name="hat_product", chapter=2, number=6, level="challenge",
+        name="hat_product",
+        chapter=2,
+        number=6,
+        level="challenge",
         title="A product of two hat matrices",
         statement=r"""
 For vectors $x, y$, show that $\hat x \hat y + (x^T y)\, I$ is an outer product of two vectors:
@@ -111,7 +132,10 @@ Give a 3x3 matrix expression.
         tip="x̂ŷv = x × (y × v); expand the double cross product (exercise 1.6 of chapter 1).",
     ),
     Exercise(
-        name="two_mirrors", chapter=2, number=7, level="challenge",
+        name="two_mirrors",
+        chapter=2,
+        number=7,
+        level="challenge",
         title="Two mirrors make a rotation",
         statement=r"""
 The mirrors $M_i = I - 2 n_i n_i^T$ have the unit normals $n_1 = (1, 0, 0)$ and
@@ -122,10 +146,10 @@ $M_2 M_1 = R_z(100°)$. Give $\psi$ (radians).
 """,
         answer=Value(shape=(), angle=True),
         tip="Compute R = M₂M₁ with sympy for a symbolic ψ and compare its first column with "
-            "(cos θ, sin θ, 0).",
+        "(cos θ, sin θ, 0).",
         mistakes={
             "double": "that ψ makes M₂M₁ turn by twice that angle: two reflections turn by "
-                      "twice the angle between their mirrors.",
+            "twice the angle between their mirrors.",
             "order": "with that ψ it is M₁M₂ that equals R_z(100°): R = M₂M₁ applies M₁ first.",
         },
     ),

@@ -4,14 +4,19 @@ from course_lib.exercises._model import Exercise, Expr, Value
 from course_lib.symbolic import W, omega, t, theta, u
 
 CHAPTER = 3
-SETUP = ("import numpy as np\nimport sympy as sp\n"
-         "from course_lib.exercises import check, hat, omega, theta, W, u, a, t, x_0")
+SETUP = (
+    "import numpy as np\nimport sympy as sp\n"
+    "from course_lib.exercises import check, hat, omega, theta, W, u, a, t, x_0"
+)
 
 _W = tuple(omega)
 
 EXERCISES = [
     Exercise(
-        name="ode_shifted", chapter=3, number=1, level="warm-up",
+        name="ode_shifted",
+        chapter=3,
+        number=1,
+        level="warm-up",
         title="The scalar ODE from two measurements",
         statement=r"""
 A quantity obeys $\dot x(t) = a\,x(t)$ with an unknown constant $a$ (equation (95)). It is
@@ -19,16 +24,18 @@ measured twice: $x(1) = 3$ and $x(3) = 12$. Using the solution (106), find $a$ a
 value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
 """,
         answer=Value(shape=(2,)),
-        tip="Every solution is x(t) = e^{at} x(0); divide the two measurements to get rid of "
-            "x(0).",
+        tip="Every solution is x(t) = e^{at} x(0); divide the two measurements to get rid of x(0).",
         mistakes={
             "interval": "x(3)/x(1) = e^{a(3 − 1)}: the two measurements are 2 time units apart, "
-                        "not 3.",
+            "not 3.",
             "at_zero": "x(1) = 3 is measured at t = 1, not at t = 0: x(0) = x(1) e^{−a}.",
         },
     ),
     Exercise(
-        name="pendulum_speed", chapter=3, number=2, level="warm-up",
+        name="pendulum_speed",
+        chapter=3,
+        number=2,
+        level="warm-up",
         title="The speed of a pendulum",
         statement=r"""
 A pendulum of length $r = 2$ m swings with the angle $\theta(t) = \frac{\pi}{6}\cos 3t$
@@ -37,11 +44,15 @@ A pendulum of length $r = 2$ m swings with the angle $\theta(t) = \frac{\pi}{6}\
 """,
         answer=Value(shape=()),
         tip="Differentiate θ(t) (chain rule: the 3 comes out), then evaluate at t = π/6.",
-        mistakes={"angle": "that is r θ(t), a length; the speed uses the angular rate θ̇ "
-                           "(equation (117))."},
+        mistakes={
+            "angle": "that is r θ(t), a length; the speed uses the angular rate θ̇ (equation (117))."
+        },
     ),
     Exercise(
-        name="hat_fifth", chapter=3, number=3, level="core",
+        name="hat_fifth",
+        chapter=3,
+        number=3,
+        level="core",
         title="The fifth power of a hat matrix, ω not unit",
         statement=r"""
 Here $\omega$ (`omega`) is **any** nonzero vector, not a unit one. Let `W` stand for
@@ -52,11 +63,16 @@ in `W`.
 """,
         answer=Expr(shape=(3, 3), domain=_W, allowed=(W, *_W), matrix_degree=2),
         tip="For a general ω, ω̂³ = ω̂ω̂² with ω̂² = ωωᵀ − ‖ω‖²I (eq. 140 before ‖ω‖ = 1).",
-        mistakes={"unit": "that holds for a unit ω only; for a general one ω̂³ = −‖ω‖² ω̂, "
-                          "and the factor ‖ω‖² comes back at every second power."},
+        mistakes={
+            "unit": "that holds for a unit ω only; for a general one ω̂³ = −‖ω‖² ω̂, "
+            "and the factor ‖ω‖² comes back at every second power."
+        },
     ),
     Exercise(
-        name="half_turn", chapter=3, number=4, level="core",
+        name="half_turn",
+        chapter=3,
+        number=4,
+        level="core",
         title="Rodrigues' formula at a half turn",
         statement=r"""
 For a **unit** axis $\omega$, evaluate Rodrigues' formula (159) at $\theta = \pi$ and write
@@ -67,13 +83,16 @@ identity (`sp.Identity(3)` or `sp.eye(3)`); no hat. Give a 3x3 matrix expression
         tip="At θ = π, sin θ = 0 and 1 − cos θ = 2; then use ω̂² = ωωᵀ − I for a unit ω.",
         mistakes={
             "mirror": "that matrix has det −1 (a mirror, not a rotation): check the sign of the "
-                      "ω̂² term of Rodrigues' formula at θ = π.",
+            "ω̂² term of Rodrigues' formula at θ = π.",
             "inner": "ωᵀω is the inner product, a number (1 here); ω̂² needs the outer product "
-                     "ωωᵀ, a 3x3 matrix (u * u.T).",
+            "ωωᵀ, a 3x3 matrix (u * u.T).",
         },
     ),
     Exercise(
-        name="rodrigues_derivative", chapter=3, number=5, level="core",
+        name="rodrigues_derivative",
+        chapter=3,
+        number=5,
+        level="core",
         title="The derivative of Rodrigues' formula",
         statement=r"""
 For a **unit** axis $\omega$, differentiate Rodrigues' formula (159) with respect to
@@ -81,12 +100,16 @@ $\theta$ and write $\frac{d}{d\theta} e^{\hat\omega\theta}$ as a polynomial of d
 2 in `W` (standing for $\hat\omega$) with coefficients in $\theta$. Then check that it equals
 $\hat\omega\, e^{\hat\omega\theta}$. Give a matrix expression in `W` and `theta`.
 """,
-        answer=Expr(shape=(3, 3), domain=(*_W, theta), allowed=(W, theta), unit_omega=True,
-                    matrix_degree=2),
+        answer=Expr(
+            shape=(3, 3), domain=(*_W, theta), allowed=(W, theta), unit_omega=True, matrix_degree=2
+        ),
         tip="Differentiate the coefficients of I, ω̂, ω̂²; to compare with ω̂R reduce ω̂³ = −ω̂.",
     ),
     Exercise(
-        name="planar_ode", chapter=3, number=6, level="core",
+        name="planar_ode",
+        chapter=3,
+        number=6,
+        level="core",
         title="A linear ODE in the plane",
         statement=r"""
 The solution of $\dot x = A x$ with $A = \begin{pmatrix} 0 & -a \\ a & 0 \end{pmatrix}$ and
@@ -96,15 +119,18 @@ smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$
 """,
         answer=Value(shape=(2,)),
         tip="Differentiate the first equation once more: ẍ₁ = −a² x₁; then impose the "
-            "condition at time t = 1 on your solution.",
+        "condition at time t = 1 on your solution.",
         mistakes={
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
-                         "a > 0 the point turns counterclockwise.",
+            "a > 0 the point turns counterclockwise.",
             "larger": "that a works, but a smaller positive a does too.",
         },
     ),
     Exercise(
-        name="exp_general_axis", chapter=3, number=7, level="challenge",
+        name="exp_general_axis",
+        chapter=3,
+        number=7,
+        level="challenge",
         title="The exponential of a hat matrix, ω not unit",
         statement=r"""
 For **any** nonzero $\omega$ (not a unit vector), sum the series (134) for
@@ -114,14 +140,18 @@ $\lVert\omega\rVert = \sqrt{\omega_1^2 + \omega_2^2 + \omega_3^2}$. Give a matri
 degree at most 2 in `W` (standing for $\hat\omega$), e.g.
 `sp.eye(3) + c1 * W + c2 * W**2` with your α and β as `c1` and `c2`.
 """,
-        answer=Expr(shape=(3, 3), domain=(*_W, theta), allowed=(W, theta, *_W),
-                    matrix_degree=2),
+        answer=Expr(shape=(3, 3), domain=(*_W, theta), allowed=(W, theta, *_W), matrix_degree=2),
         tip="Write ω = ‖ω‖ n with a unit n: then ω̂θ = n̂ (‖ω‖θ).",
-        mistakes={"unit": "that is Rodrigues' formula for a unit axis; here ω̂³ = −‖ω‖² ω̂, "
-                          "so redo the regrouping of the series with that factor."},
+        mistakes={
+            "unit": "that is Rodrigues' formula for a unit axis; here ω̂³ = −‖ω‖² ω̂, "
+            "so redo the regrouping of the series with that factor."
+        },
     ),
     Exercise(
-        name="spatial_angular_velocity", chapter=3, number=8, level="challenge",
+        name="spatial_angular_velocity",
+        chapter=3,
+        number=8,
+        level="challenge",
         title="The angular velocity of a composed motion",
         statement=r"""
 A body turns with $R(t) = R_x(t)\,R_z(t)$ (unit rates about the $x$ axis and about $z$).
@@ -131,10 +161,9 @@ Find its angular velocity $\omega(t)$ with $\dot R R^T = \hat\omega$ (compare eq
         answer=Expr(shape=(3,), domain=(t,)),
         tip="Ṙ = Ṙ_x R_z + R_x Ṙ_z; then R_x ẑ R_xᵀ is the hat of R_x e₃ (Proposition 6).",
         mistakes={
-            "body": "that is the body angular velocity (RᵀṘ = ω̂_b); the exercise asks for "
-                    "ṘRᵀ.",
+            "body": "that is the body angular velocity (RᵀṘ = ω̂_b); the exercise asks for ṘRᵀ.",
             "sum": "the z axis is turned by the first rotation: the second term is the hat of "
-                   "R_x(t) e₃, not of e₃.",
+            "R_x(t) e₃, not of e₃.",
         },
     ),
 ]

@@ -4,8 +4,9 @@ from course_lib.exercises._model import Exercise, Expr, Value
 from course_lib.symbolic import alpha, beta
 
 CHAPTER = 4
-SETUP = ("import numpy as np\nimport sympy as sp\n"
-         "from course_lib.exercises import check, alpha, beta")
+SETUP = (
+    "import numpy as np\nimport sympy as sp\nfrom course_lib.exercises import check, alpha, beta"
+)
 
 _FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 0, -1)$, $y_{ab} = (0, 1, 0)$,
 $z_{ab} = (1, 0, 0)$; frame $C$'s axes, written in $B$, are $x_{bc} = (0, 0, 1)$,
@@ -13,18 +14,27 @@ $y_{bc} = (1, 0, 0)$, $z_{bc} = (0, 1, 0)$."""
 
 EXERCISES = [
     Exercise(
-        name="compose_frames", chapter=4, number=1, level="warm-up",
+        name="compose_frames",
+        chapter=4,
+        number=1,
+        level="warm-up",
         title="Composing two frames",
-        statement=_FRAMES + r"""
+        statement=_FRAMES
+        + r"""
 Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
 """,
         answer=Value(shape=(3, 3), rotation=True),
         tip="Form R_ab and R_bc from the axes (as columns) and let the subscripts cancel.",
-        mistakes={"order": "the subscripts must cancel: R_ac = R_ab R_bc (the two inner b's "
-                           "meet), not R_bc R_ab."},
+        mistakes={
+            "order": "the subscripts must cancel: R_ac = R_ab R_bc (the two inner b's "
+            "meet), not R_bc R_ab."
+        },
     ),
     Exercise(
-        name="chain_vector", chapter=4, number=2, level="warm-up",
+        name="chain_vector",
+        chapter=4,
+        number=2,
+        level="warm-up",
         title="A vector through a chain of frames",
         statement=r"""With the frames of exercise 4.1, a vector has the coordinates
 $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
@@ -33,12 +43,15 @@ $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
         tip="v_b = R_bc v_c, then v_a = R_ab v_b.",
         mistakes={
             "order": "the frames are passed in the wrong order: first C to B (R_bc), then B to "
-                     "A (R_ab).",
+            "A (R_ab).",
             "inverse": "that goes from A to C; the exercise goes from C to A: v_a = R_ac v_c.",
         },
     ),
     Exercise(
-        name="angle_from_trace", chapter=4, number=3, level="warm-up",
+        name="angle_from_trace",
+        chapter=4,
+        number=3,
+        level="warm-up",
         title="The angle of a rotation from its trace",
         statement=r"""
 Of a rotation matrix $R$ only the diagonal entries are known: $R_{11} = 0.6$, $R_{22} = 0.1$,
@@ -46,15 +59,17 @@ $R_{33} = -0.2$. Find its angle $\theta \in [0, \pi]$ from
 $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
 """,
         answer=Value(shape=(), angle=True),
-        tip="tr R = 1 + 2 cos θ, so cos θ = (tr R − 1)/2; the off-diagonal entries are not "
-            "needed.",
+        tip="tr R = 1 + 2 cos θ, so cos θ = (tr R − 1)/2; the off-diagonal entries are not needed.",
         mistakes={
             "cosine": "that is cos θ; the exercise asks for θ itself.",
             "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
         },
     ),
     Exercise(
-        name="axis_of_rotation", chapter=4, number=4, level="core",
+        name="axis_of_rotation",
+        chapter=4,
+        number=4,
+        level="core",
         title="The axis of a rotation",
         statement=r"""
 Of a rotation $R = e^{\hat\omega\theta}$ with $\theta \in (0, \pi)$ we know only its trace,
@@ -65,12 +80,16 @@ Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
         tip="The trace gives θ (so sin θ); then read ω̂ off (R − Rᵀ)/(2 sin θ): "
-            "ω = (entry (3,2), entry (1,3), entry (2,1)).",
-        mistakes={"unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its "
-                                  "length)."},
+        "ω = (entry (3,2), entry (1,3), entry (2,1)).",
+        mistakes={
+            "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length)."
+        },
     ),
     Exercise(
-        name="fixed_vs_body", chapter=4, number=5, level="core",
+        name="fixed_vs_body",
+        chapter=4,
+        number=5,
+        level="core",
         title="Fixed axes and body axes",
         statement=r"""
 A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
@@ -79,15 +98,18 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
 """,
         answer=Value(shape=(3, 3), rotation=True),
         tip="A turn about a world (fixed) axis multiplies from the left, a turn about the "
-            "body's own axis from the right.",
+        "body's own axis from the right.",
         mistakes={
             "all_body": "the last turn is about the world x axis: it multiplies from the left.",
             "all_world": "the second turn is about the camera's own y axis: it multiplies from "
-                         "the right.",
+            "the right.",
         },
     ),
     Exercise(
-        name="composed_angle", chapter=4, number=6, level="core",
+        name="composed_angle",
+        chapter=4,
+        number=6,
+        level="core",
         title="The angle of a composed rotation",
         statement=r"""
 Let $R = R_x(\alpha)\,R_z(\beta)$. Find $\cos\theta$, where $\theta$ is the rotation angle of
@@ -102,7 +124,10 @@ different rotation, has the same angle.
         },
     ),
     Exercise(
-        name="small_angle", chapter=4, number=7, level="challenge",
+        name="small_angle",
+        chapter=4,
+        number=7,
+        level="challenge",
         title="The logarithm of a rotation near I",
         statement=r"""
 For small angles $\alpha, \beta$ the rotation $R = R_z(\beta)\,R_x(\alpha)$ is close to
@@ -114,16 +139,19 @@ both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
 """,
         answer=Expr(shape=(3,), domain=(alpha, beta)),
         tip="R_z(β) ≈ I + βẑ + β²ẑ²/2 and R_x(α) ≈ I + αx̂ + α²x̂²/2; the symmetric terms "
-            "drop out of the skew part, and the skew part of ẑx̂ is ½(ẑx̂ − x̂ẑ).",
+        "drop out of the skew part, and the skew part of ẑx̂ is ½(ẑx̂ − x̂ẑ).",
         mistakes={
             "first_order": "that is the first-order part; the product βα ẑx̂ adds a "
-                           "second-order term (its skew part is ½[ẑ, x̂], the hat of ½ e_y).",
+            "second-order term (its skew part is ½[ẑ, x̂], the hat of ½ e_y).",
             "sign": "check the order of the factors: R_z(β) is on the left, so the cross term "
-                    "is βα ẑx̂, not αβ x̂ẑ.",
+            "is βα ẑx̂, not αβ x̂ẑ.",
         },
     ),
     Exercise(
-        name="half_turn_axis", chapter=4, number=8, level="challenge",
+        name="half_turn_axis",
+        chapter=4,
+        number=8,
+        level="challenge",
         title="The axis of a half turn",
         statement=r"""
 A half turn $R$ ($\theta = \pi$) has the first row $\frac{1}{49}(23,\ -24,\ 36)$; the other
@@ -134,10 +162,9 @@ first component positive. Give a 3-vector.
         answer=Value(shape=(3,)),
         tip="(R + I)/2 = ωωᵀ: its first row is ω₁ ω; the entry (1,1) gives ω₁².",
         mistakes={
-            "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by "
-                          "ω₁ > 0.",
+            "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by ω₁ > 0.",
             "abs": "the signs of the components are not free: ωᵢωⱼ = (R + I)ᵢⱼ/2 fixes them "
-                   "relative to each other.",
+            "relative to each other.",
         },
     ),
 ]

@@ -32,7 +32,8 @@ Examples
 --------
 >>> import sympy as sp
 >>> print(check("hat_fifth", W**5))
-✗ hat_fifth: right value, but the exercise asks for a matrix expression in W of degree at most 2, with coefficients in omega_1, omega_2 and omega_3: reduce the higher powers first.
+✗ hat_fifth: right value, but the exercise asks for a matrix expression in W of degree at
+most 2, with coefficients in omega_1, omega_2 and omega_3: reduce the higher powers first.
 >>> check("hat_fifth", None).status
 'no answer'
 """
@@ -48,18 +49,71 @@ import numpy as np
 
 from .. import exercise_bank
 from ..symbolic import (
-    A, B, R, W, X, Y, a, alpha, beta, d, hat, omega, phi, t, theta, u, x, x_0, xx, xy, y, yy, z,
+    A,
+    B,
+    R,
+    W,
+    X,
+    Y,
+    a,
+    alpha,
+    beta,
+    d,
+    hat,
+    omega,
+    phi,
+    t,
+    theta,
+    u,
+    x,
+    x_0,
+    xx,
+    xy,
+    y,
+    yy,
+    z,
 )
 from ._check import expected_shape_phrase, judge
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value
 from ._reading import Rejected
 
 __all__ = [
-    "EXERCISES", "LEVELS", "CheckResult", "Choice", "Exercise", "Expr", "Value",
-    "check", "exercises", "get", "names",
-    "A", "B", "R", "W", "X", "Y", "a", "alpha", "beta", "d", "hat", "omega", "phi",
-    "t", "theta", "u", "x", "x_0", "xx", "xy", "y", "yy", "z",
+    "EXERCISES",
+    "LEVELS",
+    "CheckResult",
+    "Choice",
+    "Exercise",
+    "Expr",
+    "Value",
+    "check",
+    "exercises",
+    "get",
+    "names",
+    "A",
+    "B",
+    "R",
+    "W",
+    "X",
+    "Y",
+    "a",
+    "alpha",
+    "beta",
+    "d",
+    "hat",
+    "omega",
+    "phi",
+    "t",
+    "theta",
+    "u",
+    "x",
+    "x_0",
+    "xx",
+    "xy",
+    "y",
+    "yy",
+    "z",
 ]
+
 
 @lru_cache(maxsize=1)
 def _registry():
@@ -69,7 +123,7 @@ def _registry():
 
 
 def __getattr__(name):
-    if name == "EXERCISES":         # every exercise of the course, by name, in chapter order
+    if name == "EXERCISES":  # every exercise of the course, by name, in chapter order
         return _registry()
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
@@ -104,8 +158,9 @@ def exercises(chapter=None):
     if chapter is None:
         return list(_registry().values())
     if chapter not in exercise_bank.CHAPTERS:
-        raise ValueError(f"chapter must be one of {sorted(exercise_bank.CHAPTERS)}, "
-                         f"got {chapter!r}")
+        raise ValueError(
+            f"chapter must be one of {sorted(exercise_bank.CHAPTERS)}, got {chapter!r}"
+        )
     return [ex for ex in _registry().values() if ex.chapter == chapter]
 
 
@@ -154,11 +209,21 @@ def check(name, answer):
         if status == "no answer":
             text = f"no answer yet: assign your answer to `{ex.answer_variable}`."
     except KeyError:
-        status, text = "malformed", ("this exercise has no stored fingerprint; the instructor "
-                                     "regenerates them with tools/exercise_fingerprints.py.")
+        status, text = (
+            "malformed",
+            (
+                "this exercise has no stored fingerprint; the instructor "
+                "regenerates them with tools/exercise_fingerprints.py."
+            ),
+        )
     except Exception as err:  # noqa: BLE001 - a bad answer must never raise from deep inside
-        status, text = "malformed", (f"could not check your answer ({type(err).__name__}); "
-                                     f"give {expected_shape_phrase(ex)} as the exercise asks.")
+        status, text = (
+            "malformed",
+            (
+                f"could not check your answer ({type(err).__name__}); "
+                f"give {expected_shape_phrase(ex)} as the exercise asks."
+            ),
+        )
     if status == "wrong" and ex.tip:
         text = f"{text} Hint: {ex.tip}"
     return CheckResult(status == "correct", f"{name}: {text}", status)

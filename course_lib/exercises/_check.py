@@ -10,8 +10,10 @@ from . import _engine as E
 from ._model import Choice, Expr, Value
 from ._reading import Rejected, describe_shape, matrix_degree, read_answer, read_choice
 
-_UNIT_HINT = ("ω is a unit vector here: use ω₁² + ω₂² + ω₃² = 1 (a term with ‖ω‖² does not "
-              "vanish, it becomes 1).")
+_UNIT_HINT = (
+    "ω is a unit vector here: use ω₁² + ω₂² + ω₃² = 1 (a term with ‖ω‖² does not "
+    "vanish, it becomes 1)."
+)
 
 
 def _join(items):
@@ -20,6 +22,7 @@ def _join(items):
 
 
 # ------------------------------------------------------------------------------ form
+
 
 def _describe_form(spec):
     allowed = spec.allowed or spec.domain
@@ -38,8 +41,11 @@ def _explicit_constants_ok(e):
     for node in sp.preorder_traversal(e):
         if isinstance(node, sp.MatrixBase):
             n = node.shape[0]
-            if node.shape[0] != node.shape[1] or node.free_symbols or \
-                    node != node[0, 0] * sp.eye(n):
+            if (
+                node.shape[0] != node.shape[1]
+                or node.free_symbols
+                or node != node[0, 0] * sp.eye(n)
+            ):
                 return False
     return True
 
@@ -67,6 +73,7 @@ def form_violation(spec, form, M):
 
 # ------------------------------------------------------------------------------ hints
 
+
 def _positions(bad, shape):
     idx = np.argwhere(bad)
     if len(shape) == 0:
@@ -88,11 +95,15 @@ def _symmetry_hint(A, Ev):
     if E.close(A, np.zeros_like(A)):
         return None
     if E.close(Ev, -Et) and E.close(A, At):
-        return ("your matrix is symmetric, but the right one is skew-symmetric (Mᵀ = −M): "
-                "an odd power of a skew matrix is skew, an even one is symmetric.")
+        return (
+            "your matrix is symmetric, but the right one is skew-symmetric (Mᵀ = −M): "
+            "an odd power of a skew matrix is skew, an even one is symmetric."
+        )
     if E.close(Ev, Et) and E.close(A, -At):
-        return ("your matrix is skew-symmetric, but the right one is symmetric: an even power "
-                "of a skew matrix is symmetric, an odd one is skew.")
+        return (
+            "your matrix is skew-symmetric, but the right one is symmetric: an even power "
+            "of a skew matrix is symmetric, an odd one is skew."
+        )
     return None
 
 
@@ -102,23 +113,29 @@ def _generic_hint(spec, A, Ev):
     nonzero = not E.close(Ev, zero)
     if nonzero and E.close(A, -Ev):
         return "your answer is the negative of the right one: check the signs."
-    if len(shape) == 2 and E.close(A, np.swapaxes(Ev, -1, -2)) and \
-            not E.close(Ev, np.swapaxes(Ev, -1, -2)):
+    if (
+        len(shape) == 2
+        and E.close(A, np.swapaxes(Ev, -1, -2))
+        and not E.close(Ev, np.swapaxes(Ev, -1, -2))
+    ):
         return "your answer is the transpose of the right one (rows and columns swapped)."
     if nonzero and E.close(A, zero):
         return "your answer is zero, the right one is not."
     if nonzero:
         c = float(np.sum(A * Ev) / np.sum(Ev * Ev))
         if abs(c - 1) > 1e-6 and abs(c + 1) > 1e-6 and E.close(A, c * Ev):
-            return ("your answer is a constant multiple of the right one: check the numerical "
-                    "factors.")
+            return (
+                "your answer is a constant multiple of the right one: check the numerical factors."
+            )
         axes = tuple(range(1, A.ndim))
         norms = np.sum(Ev * Ev, axis=axes)
         if np.all(norms > E.TOL):
             ck = np.sum(A * Ev, axis=axes) / norms
             if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
-                return ("your answer is the right one times a factor that changes with the "
-                        "symbols: check the scalar factors (for instance the powers of ‖ω‖).")
+                return (
+                    "your answer is the right one times a factor that changes with the "
+                    "symbols: check the scalar factors (for instance the powers of ‖ω‖)."
+                )
     if len(shape) == 2 and shape[0] == shape[1]:
         hint = _symmetry_hint(A, Ev)
         if hint:
@@ -130,9 +147,11 @@ def _generic_hint(spec, A, Ev):
             return msg + (" " + _UNIT_HINT if spec.unit_omega else "")
     per_point = [E.close(a[None], e[None]) for a, e in zip(A, Ev)]
     if any(per_point):
-        return ("your answer agrees with the right one at some values of the symbols but not "
-                "over their whole range (a truncated series, or a formula valid only for some "
-                "values?).")
+        return (
+            "your answer agrees with the right one at some values of the symbols but not "
+            "over their whole range (a truncated series, or a formula valid only for some "
+            "values?)."
+        )
     if shape == ():
         return "your expression is not equal to the right one."
     bad = np.zeros(A.shape[1:], dtype=bool)
@@ -152,6 +171,7 @@ def _property_hint(ex, M, syms, pts):
 
 
 # ------------------------------------------------------------------------------ judges
+
 
 def _stored(vals, shape):
     return np.array(vals, dtype=float).reshape((E.NPOINTS, *shape))
@@ -173,8 +193,10 @@ def judge_expr(ex, fp, answer):
         right = E.close(A, Ev)
     if right:
         if violation:
-            return "form", f"right value, but the exercise asks for {_describe_form(spec)}: " \
-                           f"{violation}."
+            return (
+                "form",
+                f"right value, but the exercise asks for {_describe_form(spec)}: {violation}.",
+            )
         return "correct", "correct."
     for mid, vals in fp["mistakes"].items():
         if E.close(A, _stored(vals, spec.shape)):
@@ -196,8 +218,9 @@ def _numbers(M):
     except (TypeError, ValueError, OverflowError):
         raise Rejected("could not read your answer as numbers.") from None
     if not np.all(np.isfinite(vals)):
-        raise Rejected("your answer contains nan or infinity (or a number too large for "
-                       "double precision).")
+        raise Rejected(
+            "your answer contains nan or infinity (or a number too large for double precision)."
+        )
     if np.max(np.abs(vals.imag)) > E.TOL:
         raise Rejected("your answer is complex; a real answer is expected.")
     return vals.real
@@ -220,16 +243,22 @@ def _value_hint(ex, fp, v):
             return "your angle is in degrees; the exercise asks for radians."
         for shift in (2 * np.pi, -2 * np.pi):
             if E.match_cells(name, v + shift, fp["cells"]).all():
-                return ("your angle differs from the right one by a full turn (2π): give it in "
-                        "the range the exercise asks for.")
+                return (
+                    "your angle differs from the right one by a full turn (2π): give it in "
+                    "the range the exercise asks for."
+                )
     if spec.rotation:
         R = v.reshape(3, 3)
         if np.linalg.norm(R.T @ R - np.eye(3)) > 1e-6:
-            return ("your matrix is not a rotation: its columns are not orthonormal "
-                    f"(‖RᵀR − I‖ = {np.linalg.norm(R.T @ R - np.eye(3)):.3g}).")
+            return (
+                "your matrix is not a rotation: its columns are not orthonormal "
+                f"(‖RᵀR − I‖ = {np.linalg.norm(R.T @ R - np.eye(3)):.3g})."
+            )
         if np.linalg.det(R) < 0:
-            return ("your matrix has det R = −1: a reflection, not a rotation (check the order "
-                    "of a cross product or the sign of one column).")
+            return (
+                "your matrix has det R = −1: a reflection, not a rotation (check the order "
+                "of a cross product or the sign of one column)."
+            )
     return _positions(~ok.reshape(spec.shape), spec.shape)
 
 
@@ -245,7 +274,7 @@ def _single_precision(answer):
     return False
 
 
-_MAX_REACH = 1024        # cells scanned each side: float32 rounding of entries up to about 4
+_MAX_REACH = 1024  # cells scanned each side: float32 rounding of entries up to about 4
 
 
 def _single_precision_matches(name, v, cells):
@@ -256,7 +285,7 @@ def _single_precision_matches(name, v, cells):
     ok = []
     for i, (x, (off, dig)) in enumerate(zip(np.ravel(v), cells)):
         reach = int(np.ceil(8 * np.finfo(np.float32).eps * max(1.0, abs(x)) / E.STEP))
-        if reach > _MAX_REACH:                       # a huge entry: not worth the scan
+        if reach > _MAX_REACH:  # a huge entry: not worth the scan
             ok.append(False)
             continue
         centre = int(np.floor((x + off * E.STEP / 2) / E.STEP))
@@ -264,9 +293,11 @@ def _single_precision_matches(name, v, cells):
     return np.array(ok)
 
 
-_SINGLE = ("your answer is stored in single precision (float32), which keeps only about 7 "
-           "digits; the check needs double precision (within TOL): compute in float64 (drop "
-           "dtype=np.float32 or .astype(np.float32)).")
+_SINGLE = (
+    "your answer is stored in single precision (float32), which keeps only about 7 "
+    "digits; the check needs double precision (within TOL): compute in float64 (drop "
+    "dtype=np.float32 or .astype(np.float32))."
+)
 
 
 def judge_value(ex, fp, answer):
@@ -278,8 +309,9 @@ def judge_value(ex, fp, answer):
         ok = _single_precision_matches(ex.name, v, fp["cells"])
         if ok.all():
             return "wrong", "right to single precision, but " + _SINGLE
-        return "wrong", _positions(~ok.reshape(ex.answer.shape), ex.answer.shape) + " Also, " \
-            + _SINGLE
+        return "wrong", _positions(
+            ~ok.reshape(ex.answer.shape), ex.answer.shape
+        ) + " Also, " + _SINGLE
     return "wrong", _value_hint(ex, fp, v)
 
 

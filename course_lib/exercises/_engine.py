@@ -30,7 +30,14 @@ from math import comb
 import numpy as np
 import sympy as sp
 from sympy.matrices.expressions import (
-    Identity, MatAdd, MatMul, MatPow, MatrixExpr, MatrixSymbol, Transpose, ZeroMatrix,
+    Identity,
+    MatAdd,
+    MatMul,
+    MatPow,
+    MatrixExpr,
+    MatrixSymbol,
+    Transpose,
+    ZeroMatrix,
 )
 
 from .. import symbolic as S
@@ -47,13 +54,25 @@ _MAX_EXACT_DEGREE = 8
 #: What each stand-in symbol of a form means in the base symbols.
 SCALAR_DEFINITIONS = {S.xx: S.x.dot(S.x), S.yy: S.y.dot(S.y), S.xy: S.x.dot(S.y)}
 MATRIX_DEFINITIONS = {
-    S.W: S.hat(S.omega), S.u: S.omega, S.X: S.x, S.Y: S.y, S.d: S.vector("d"),
-    S.A: S.rotation_symbols("a"), S.B: S.rotation_symbols("b"), S.R: S.rotation_symbols("r"),
+    S.W: S.hat(S.omega),
+    S.u: S.omega,
+    S.X: S.x,
+    S.Y: S.y,
+    S.d: S.vector("d"),
+    S.A: S.rotation_symbols("a"),
+    S.B: S.rotation_symbols("b"),
+    S.R: S.rotation_symbols("r"),
 }
 _ROTATIONS = (S.A, S.B, S.R)
 _VECTORS = (S.omega, S.x, S.y, S.z, MATRIX_DEFINITIONS[S.d])
-_SCALAR_RANGES = {S.theta: (-_TURN, _TURN), S.alpha: (-_TURN, _TURN), S.beta: (-_TURN, _TURN),
-                  S.phi: (-_TURN, _TURN), S.t: (-4.0, 4.0), S.a: (-1.5, 1.5)}
+_SCALAR_RANGES = {
+    S.theta: (-_TURN, _TURN),
+    S.alpha: (-_TURN, _TURN),
+    S.beta: (-_TURN, _TURN),
+    S.phi: (-_TURN, _TURN),
+    S.t: (-4.0, 4.0),
+    S.a: (-1.5, 1.5),
+}
 
 
 def digest(*parts):
@@ -63,6 +82,7 @@ def digest(*parts):
 
 
 # ------------------------------------------------------------------------------ sample points
+
 
 def base_symbols(spec):
     """The scalar symbols an Expr answer is finally a function of, in a fixed order."""
@@ -84,11 +104,14 @@ def _random_rotations(rng, n):
     q = rng.normal(size=(n, 4))
     q /= np.linalg.norm(q, axis=1, keepdims=True)
     w, x, y, z = q.T
-    return np.stack([
-        np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
-    ], -2)
+    return np.stack(
+        [
+            np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
+            np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
+            np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
+        ],
+        -2,
+    )
 
 
 @lru_cache(maxsize=64)
@@ -119,10 +142,23 @@ def points(name, spec):
 #: The numpy functions of the allowed elementary functions. lambdify with this namespace
 #: instead of modules="numpy" avoids importing all of numpy's namespace (seconds, once).
 _NAMESPACE = {
-    "sin": np.sin, "cos": np.cos, "tan": np.tan, "exp": np.exp, "log": np.log,
-    "asin": np.arcsin, "acos": np.arccos, "atan": np.arctan, "atan2": np.arctan2,
-    "sinh": np.sinh, "cosh": np.cosh, "tanh": np.tanh, "sqrt": np.sqrt, "Abs": np.abs,
-    "pi": np.pi, "E": np.e, "I": 1j,
+    "sin": np.sin,
+    "cos": np.cos,
+    "tan": np.tan,
+    "exp": np.exp,
+    "log": np.log,
+    "asin": np.arcsin,
+    "acos": np.arccos,
+    "atan": np.arctan,
+    "atan2": np.arctan2,
+    "sinh": np.sinh,
+    "cosh": np.cosh,
+    "tanh": np.tanh,
+    "sqrt": np.sqrt,
+    "Abs": np.abs,
+    "pi": np.pi,
+    "E": np.e,
+    "I": 1j,
 }
 
 
@@ -137,8 +173,13 @@ def _lambdified(M, syms, pts):
     args = [pts[s].astype(complex) for s in syms]
     with np.errstate(all="ignore"):
         rows = f(*args)
-    return np.stack([np.stack([np.broadcast_to(np.asarray(v, dtype=complex), (NPOINTS,))
-                               for v in row], -1) for row in rows], -2)
+    return np.stack(
+        [
+            np.stack([np.broadcast_to(np.asarray(v, dtype=complex), (NPOINTS,)) for v in row], -1)
+            for row in rows
+        ],
+        -2,
+    )
 
 
 def _eval_matrix_expr(e, syms, pts, cache):
@@ -153,10 +194,12 @@ def _eval_matrix_expr(e, syms, pts, cache):
     if kind is ZeroMatrix:
         return np.zeros((NPOINTS, *e.shape), dtype=complex)
     if not isinstance(e, MatrixExpr) or isinstance(e, sp.MatrixBase):
-        return _lambdified(sp.ImmutableMatrix(e) if isinstance(e, sp.MatrixBase)
-                           else sp.ImmutableMatrix([[e]]), syms, pts)
-    parts = [_eval_matrix_expr(a, syms, pts, cache) for a in e.args] if kind is not MatPow \
-        else None
+        return _lambdified(
+            sp.ImmutableMatrix(e) if isinstance(e, sp.MatrixBase) else sp.ImmutableMatrix([[e]]),
+            syms,
+            pts,
+        )
+    parts = [_eval_matrix_expr(a, syms, pts, cache) for a in e.args] if kind is not MatPow else None
     if kind is MatAdd:
         return sum(parts[1:], parts[0])
     if kind is MatMul:
@@ -187,18 +230,22 @@ def values(form, M, syms, pts):
     """Real values (NPOINTS, rows, cols) of an answer read by ``read_answer``."""
     if form == "matrix":
         entry = _SYMBOL_VALUES.get(id(pts))
-        if entry is None or entry[0] is not pts:         # keeps pts alive: ids never reused
+        if entry is None or entry[0] is not pts:  # keeps pts alive: ids never reused
             entry = _SYMBOL_VALUES[id(pts)] = (pts, {})
         vals = _eval_matrix_expr(M.xreplace(SCALAR_DEFINITIONS), syms, pts, entry[1])
     else:
         vals = _lambdified(M.xreplace(SCALAR_DEFINITIONS), syms, pts)
     if not np.all(np.isfinite(vals)):
-        raise Rejected("your answer is undefined (a division by zero, or a huge value) at some "
-                       "values of the symbols.")
+        raise Rejected(
+            "your answer is undefined (a division by zero, or a huge value) at some "
+            "values of the symbols."
+        )
     scale = np.maximum(1.0, np.abs(vals.real))
     if np.max(np.abs(vals.imag) / scale, initial=0.0) > TOL:
-        raise Rejected("your answer is complex-valued; a real answer is expected (check "
-                       "square roots of negative quantities and stray factors of I).")
+        raise Rejected(
+            "your answer is complex-valued; a real answer is expected (check "
+            "square roots of negative quantities and stray factors of I)."
+        )
     return vals.real
 
 
@@ -207,8 +254,7 @@ def exact_form(name, M, unit_omega):
     entries = []
     for e in M.xreplace(SCALAR_DEFINITIONS):
         n, deg = len(e.free_symbols), degree_bound(e)
-        if deg > _MAX_EXACT_DEGREE or comb(n + deg, n) > _MAX_EXACT_TERMS or \
-                sp.count_ops(e) > 200:
+        if deg > _MAX_EXACT_DEGREE or comb(n + deg, n) > _MAX_EXACT_TERMS or sp.count_ops(e) > 200:
             return None
         e = sp.expand(e)
         if unit_omega and e.free_symbols & set(S.omega):
@@ -227,11 +273,12 @@ def close(A, E):
         return False
     axes = tuple(range(1, A.ndim))
     err = np.sqrt(np.sum((A - E) ** 2, axis=axes))
-    scale = np.maximum(1.0, np.sqrt(np.sum(E ** 2, axis=axes)))
+    scale = np.maximum(1.0, np.sqrt(np.sum(E**2, axis=axes)))
     return bool(np.all(err <= TOL * scale))
 
 
 # ------------------------------------------------------------------------------ numeric digests
+
 
 def value_cells(name, vec):
     """Fingerprint of a numeric answer: [offset index, digest] for each entry."""
@@ -253,4 +300,3 @@ def match_cells(name, vec, cells):
         cell = int(np.floor((v + off * STEP / 2) / STEP)) if np.isfinite(v) else None
         ok.append(cell is not None and digest(name, i, cell) == dig)
     return np.array(ok)
-

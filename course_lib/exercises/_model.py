@@ -37,7 +37,7 @@ class CheckResult(Verdict):
     status: str = "wrong"
 
     def __repr__(self):
-        return str(self)                   # plain-text front ends show the verdict line
+        return str(self)  # plain-text front ends show the verdict line
 
 
 @dataclass(frozen=True)
@@ -139,8 +139,9 @@ class Exercise:
 
     def __post_init__(self):
         if self.level not in LEVELS:
-            raise ValueError(f"level of {self.name} must be one of {list(LEVELS)}, "
-                             f"got {self.level!r}")
+            raise ValueError(
+                f"level of {self.name} must be one of {list(LEVELS)}, got {self.level!r}"
+            )
 
     @property
     def label(self):
@@ -164,9 +165,11 @@ class Exercise:
 
     def markdown(self):
         """The statement with its heading, as the markdown of the notebook cell."""
-        return (f"### {self.heading()}\n\n{self.statement.strip()}\n\n"
-                f"Assign your answer to `{self.answer_variable}`; the cell after it checks "
-                "the answer and shows ✓, or an error with a hint.")
+        return (
+            f"### {self.heading()}\n\n{self.statement.strip()}\n\n"
+            f"Assign your answer to `{self.answer_variable}`; the cell after it checks "
+            "the answer and shows ✓, or an error with a hint."
+        )
 
     def _repr_markdown_(self):
         return self.markdown()

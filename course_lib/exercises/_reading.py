@@ -16,7 +16,14 @@ import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
 from sympy.matrices.expressions import (
-    Identity, MatAdd, MatMul, MatPow, MatrixExpr, MatrixSymbol, Transpose, ZeroMatrix,
+    Identity,
+    MatAdd,
+    MatMul,
+    MatPow,
+    MatrixExpr,
+    MatrixSymbol,
+    Transpose,
+    ZeroMatrix,
 )
 
 __all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
@@ -26,14 +33,36 @@ MAX_DEGREE = 24
 MAX_MATRIX_DEGREE = 6
 MAX_INTEGER = 10**30
 
-_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.exp, sp.log, sp.asin, sp.acos, sp.atan, sp.atan2,
-              sp.sinh, sp.cosh, sp.tanh)
-_SCALAR_TYPES = {sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Integer, sp.Rational, sp.Float,
-                 *_FUNCTIONS}
-_NUMBER_SINGLETONS = {type(n) for n in (sp.S.Zero, sp.S.One, sp.S.NegativeOne, sp.S.Half,
-                                        sp.S.Pi, sp.S.Exp1, sp.S.ImaginaryUnit)}
-_BAD_NUMBERS = {type(n) for n in (sp.S.NaN, sp.S.Infinity, sp.S.NegativeInfinity,
-                                  sp.S.ComplexInfinity)}
+_FUNCTIONS = (
+    sp.sin,
+    sp.cos,
+    sp.tan,
+    sp.exp,
+    sp.log,
+    sp.asin,
+    sp.acos,
+    sp.atan,
+    sp.atan2,
+    sp.sinh,
+    sp.cosh,
+    sp.tanh,
+)
+_SCALAR_TYPES = {sp.Add, sp.Mul, sp.Pow, sp.Symbol, sp.Integer, sp.Rational, sp.Float, *_FUNCTIONS}
+_NUMBER_SINGLETONS = {
+    type(n)
+    for n in (
+        sp.S.Zero,
+        sp.S.One,
+        sp.S.NegativeOne,
+        sp.S.Half,
+        sp.S.Pi,
+        sp.S.Exp1,
+        sp.S.ImaginaryUnit,
+    )
+}
+_BAD_NUMBERS = {
+    type(n) for n in (sp.S.NaN, sp.S.Infinity, sp.S.NegativeInfinity, sp.S.ComplexInfinity)
+}
 _MATRIX_TYPES = {MatAdd, MatMul, MatPow, Transpose, Identity, ZeroMatrix, MatrixSymbol}
 _EXPLICIT = (sp.ImmutableDenseMatrix, sp.MutableDenseMatrix)
 _NUMPY_INTS = (np.int64, np.int32, np.int16, np.int8)
@@ -56,12 +85,16 @@ def _not_allowed(node):
     kind = type(node)
     name = getattr(kind, "__name__", str(kind))
     if isinstance(node, AppliedUndef):
-        return Rejected(f"not allowed here: the undefined function {node} (give an explicit "
-                        "expression).", "not allowed")
+        return Rejected(
+            f"not allowed here: the undefined function {node} (give an explicit expression).",
+            "not allowed",
+        )
     if (getattr(kind, "__module__", None) or "").split(".")[0] != "sympy":
-        return Rejected(f"not allowed here: your answer contains an object of type {name} "
-                        "(a class of your own); build it from plain sympy objects.",
-                        "not allowed")
+        return Rejected(
+            f"not allowed here: your answer contains an object of type {name} "
+            "(a class of your own); build it from plain sympy objects.",
+            "not allowed",
+        )
     if isinstance(node, sp.Inverse):
         why = "the exercise asks for the answer without an inverse"
     elif isinstance(node, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
@@ -99,12 +132,16 @@ def _check_symbol(s, symbols, numeric):
         return
     same_name = [k for k in symbols if getattr(k, "name", None) == s.name]
     if same_name:
-        raise Rejected(f"the symbol {s} in your answer is not the one of the course (made with "
-                       "other assumptions, e.g. without real=True); import it from "
-                       "course_lib.exercises.")
+        raise Rejected(
+            f"the symbol {s} in your answer is not the one of the course (made with "
+            "other assumptions, e.g. without real=True); import it from "
+            "course_lib.exercises."
+        )
     names = ", ".join(sorted(str(k) for k in symbols)) or "none"
-    raise Rejected(f"your answer contains the symbol {s}, which does not belong to this "
-                   f"exercise (its symbols: {names}).")
+    raise Rejected(
+        f"your answer contains the symbol {s}, which does not belong to this "
+        f"exercise (its symbols: {names})."
+    )
 
 
 def _walk(expr, symbols, numeric):
@@ -150,7 +187,7 @@ def degree_bound(e, memo=None):
             out = int(np.ceil(abs(float(ex)) * degree_bound(base, memo)))
         else:
             out = degree_bound(base, memo) + degree_bound(ex, memo) + 1
-    else:                                            # an elementary function: a new atom
+    else:  # an elementary function: a new atom
         inner = max(degree_bound(a, memo) for a in e.args)
         if inner > MAX_DEGREE:
             raise _too_complex(f"degree above {MAX_DEGREE} inside {type(e).__name__}")
@@ -177,7 +214,7 @@ def matrix_degree(e):
         if not (ex.is_Integer and ex >= 0):
             raise Rejected("a matrix power must have a whole exponent ≥ 0 here.", "not allowed")
         out = int(ex) * matrix_degree(base)
-    else:                                            # Transpose
+    else:  # Transpose
         out = matrix_degree(e.args[0])
     if out > MAX_MATRIX_DEGREE:
         raise _too_complex(f"matrix power above {MAX_MATRIX_DEGREE}")
@@ -199,22 +236,34 @@ def _scalar(v):
             raise Rejected("your answer is complex; a real answer is expected.")
         return sp.Float(v.real)
     if kind is str:
-        raise Rejected("your answer is a string (text), not a string of numbers or "
-                       "expressions: give sympy expressions or numbers, not a string.")
+        raise Rejected(
+            "your answer is a string (text), not a string of numbers or "
+            "expressions: give sympy expressions or numbers, not a string."
+        )
     if isinstance(v, sp.Basic) and (getattr(kind, "__module__", None) or "")[:6] != "sympy.":
-        raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
-                       "own); give plain numbers or sympy expressions.", "not allowed")
+        raise Rejected(
+            f"not allowed here: an entry of type {kind.__name__} (a class of your "
+            "own); give plain numbers or sympy expressions.",
+            "not allowed",
+        )
     if isinstance(v, sp.Basic) and not isinstance(v, (sp.MatrixBase, MatrixExpr)):
         if not isinstance(v, sp.Expr):
-            raise Rejected(f"your answer is a {type(v).__name__} (an equation or a truth "
-                           "value?), not an expression; for an Eq from dsolve take its .rhs.")
+            raise Rejected(
+                f"your answer is a {type(v).__name__} (an equation or a truth "
+                "value?), not an expression; for an Eq from dsolve take its .rhs."
+            )
         return v
-    if (getattr(kind, "__module__", None) or "").split(".")[0] not in ("builtins", "numpy",
-                                                                        "sympy"):
-        raise Rejected(f"not allowed here: an entry of type {kind.__name__} (a class of your "
-                       "own); give plain numbers or sympy expressions.", "not allowed")
-    raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an "
-                   "expression.")
+    if (getattr(kind, "__module__", None) or "").split(".")[0] not in (
+        "builtins",
+        "numpy",
+        "sympy",
+    ):
+        raise Rejected(
+            f"not allowed here: an entry of type {kind.__name__} (a class of your "
+            "own); give plain numbers or sympy expressions.",
+            "not allowed",
+        )
+    raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an expression.")
 
 
 def _rows(answer):
@@ -282,15 +331,23 @@ def read_answer(answer, shape, symbols, numeric=False):
             raise _not_allowed(answer)
         _walk(answer, symbols, numeric)
         matrix_degree(answer)
-        return "matrix", _fit_shape(answer, shape, f"a {answer.shape[0]}x{answer.shape[1]} "
-                                                   "matrix expression")
+        return "matrix", _fit_shape(
+            answer, shape, f"a {answer.shape[0]}x{answer.shape[1]} matrix expression"
+        )
     if kind in _EXPLICIT:
         M, got = sp.ImmutableMatrix(answer), f"a {answer.rows}x{answer.cols} matrix"
-    elif isinstance(answer, sp.MatrixBase) or (isinstance(answer, (list, tuple, np.ndarray))
-                                                and kind not in (list, tuple, np.ndarray)):
-        raise _not_allowed(answer) if isinstance(answer, sp.Basic) else Rejected(
-            f"not allowed here: an object of type {kind.__name__} (a class of your own); "
-            "give a plain list, tuple, numpy array or sympy Matrix.", "not allowed")
+    elif isinstance(answer, sp.MatrixBase) or (
+        isinstance(answer, (list, tuple, np.ndarray)) and kind not in (list, tuple, np.ndarray)
+    ):
+        raise (
+            _not_allowed(answer)
+            if isinstance(answer, sp.Basic)
+            else Rejected(
+                f"not allowed here: an object of type {kind.__name__} (a class of your own); "
+                "give a plain list, tuple, numpy array or sympy Matrix.",
+                "not allowed",
+            )
+        )
     else:
         if kind is np.ndarray and answer.ndim == 0:
             answer = answer.item()
@@ -316,13 +373,15 @@ def read_choice(answer, letters):
     elif kind in (set, frozenset, list, tuple):
         items = list(answer)
         if not all(type(c) is str for c in items):
-            raise Rejected("give the letters as strings, e.g. {\"a\", \"c\"}.")
+            raise Rejected('give the letters as strings, e.g. {"a", "c"}.')
     else:
-        raise Rejected(f"give a set of letters such as {{\"a\", \"c\"}}, not an object of "
-                       f"type {kind.__name__}.")
+        raise Rejected(
+            f'give a set of letters such as {{"a", "c"}}, not an object of type {kind.__name__}.'
+        )
     items = [c.strip().lower() for c in items]
-    bad = sorted(set(c for c in items if c not in letters))
+    bad = sorted({c for c in items if c not in letters})
     if bad:
-        raise Rejected(f"{', '.join(map(repr, bad))} is not one of the letters "
-                       f"{', '.join(letters)}.")
+        raise Rejected(
+            f"{', '.join(map(repr, bad))} is not one of the letters {', '.join(letters)}."
+        )
     return "".join(sorted(set(items)))

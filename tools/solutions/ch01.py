@@ -6,16 +6,16 @@ answer}; tools/exercise_fingerprints.py stores fingerprints of both, never the c
 """
 
 SOLUTIONS = {
-    "coords_by_projection": '''\
+    "coords_by_projection": """\
 o, p = np.array([1, 1, 0]), np.array([3, 1, 2])
 directions = [np.array([1, 1, 0]), np.array([-1, 1, 0]), np.array([0, 0, 2])]
 e1, e2, e3 = [v / np.linalg.norm(v) for v in directions]       # unit vectors, eq. (1)
-answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]   # eqs (3)-(5)''',
-    "angle_from_lengths": '''\
+answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]   # eqs (3)-(5)""",
+    "angle_from_lengths": """\
 # 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
 x_dot_y = sp.Rational(9 + 16 - 13, 2)
-answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))''',
-    "which_are_rigid": '''\
+answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))""",
+    "which_are_rigid": """\
 # g(p) = M p + d keeps distances iff M is orthogonal; it keeps cross products iff det M = +1
 half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])            # = diag(-1, -1, 1)
 quarter_x = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])
@@ -28,39 +28,46 @@ M = {
     "e": quarter_x,                                             # the translation drops out of g_*
     "f": -np.eye(3),
 }
-answer_which_are_rigid = {k for k, Mk in M.items() if np.isclose(np.linalg.det(Mk), 1)}''',
-    "unit_tangent": '''\
+answer_which_are_rigid = {k for k, Mk in M.items() if np.isclose(np.linalg.det(Mk), 1)}""",
+    "unit_tangent": """\
 p = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])
 velocity = p.diff(t)
 speed = sp.sqrt(sp.trigsimp(velocity.dot(velocity)))      # sqrt(4 + 9)
-answer_unit_tangent = velocity / speed''',
-    "lagrange_identity": '''\
+answer_unit_tangent = velocity / speed""",
+    "lagrange_identity": """\
 lhs = sp.expand(x.cross(y).dot(x.cross(y)))
 guess = xx * yy - xy**2
 in_components = guess.subs({xx: x.dot(x), yy: y.dot(y), xy: x.dot(y)})
 assert sp.expand(lhs - in_components) == 0
-answer_lagrange_identity = guess''',
-    "bac_cab": '''\
+answer_lagrange_identity = guess""",
+    "bac_cab": """\
 lhs = x.cross(y.cross(z))
 alpha_, beta_ = x.dot(z), -x.dot(y)
 assert sp.expand(lhs - (alpha_ * y + beta_ * z)) == sp.zeros(3, 1)
-answer_bac_cab = [alpha_, beta_]''',
-    "motion_from_points": '''\
+answer_bac_cab = [alpha_, beta_]""",
+    "motion_from_points": """\
 g0, g1, g2 = np.array([1, 2, 3]), np.array([1, 2, 4]), np.array([1, 1, 3])
 r1, r2 = g1 - g0, g2 - g0
-answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])''',
+answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])""",
 }
 
 MISTAKES = {
-    "coords_by_projection": {"weights": "np.column_stack([e1, e2, e3]) @ (p - o)",
-                             "no_origin": "[p @ e1, p @ e2, p @ e3]",
-                             "unnormalized": "[(p - o) @ v for v in directions]"},
+    "coords_by_projection": {
+        "weights": "np.column_stack([e1, e2, e3]) @ (p - o)",
+        "no_origin": "[p @ e1, p @ e2, p @ e3]",
+        "unnormalized": "[(p - o) @ v for v in directions]",
+    },
     "angle_from_lengths": {"cosine": "sp.Rational(1, 2)", "sign": "sp.acos(-sp.Rational(1, 2))"},
-    "which_are_rigid": {"mirrors": '{"a", "b", "c", "d", "e", "f"}', "translation": '{"b", "d"}',
-                        "two_mirrors": '{"b", "e"}'},
+    "which_are_rigid": {
+        "mirrors": '{"a", "b", "c", "d", "e", "f"}',
+        "translation": '{"b", "d"}',
+        "two_mirrors": '{"b", "e"}',
+    },
     "unit_tangent": {"velocity": "velocity"},
     "lagrange_identity": {"plus": "xx * yy + xy**2"},
     "bac_cab": {"swapped": "[beta_, alpha_]"},
-    "motion_from_points": {"mirror": "np.column_stack([r1, r2, -np.cross(r1, r2)])",
-                           "points": "np.column_stack([g1, g2, np.cross(g1, g2)])"},
+    "motion_from_points": {
+        "mirror": "np.column_stack([r1, r2, -np.cross(r1, r2)])",
+        "points": "np.column_stack([g1, g2, np.cross(g1, g2)])",
+    },
 }

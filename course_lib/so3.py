@@ -214,11 +214,14 @@ def _scaled_half_norm(x, y, z):
 
 
 def _exp_rows(x, y, z, out):
-    """Rodrigues' formula on rotation-vector rows, written into the 9 rows of ``out``.
+    """Rodrigues' formula on rotation-vector rows, written into the 9 (strided) rows of ``out``.
 
-    Written with the half angle h = θ/2, v = sin h ω and q₀ = cos h, so that nothing cancels:
-    sin θ ω̂ = 2 q₀ v̂ and (1 − cos θ) ω̂² = 2 v̂², hence
-    R = I + 2 q₀ v̂ + 2 v̂² with v̂² = v vᵀ − ‖v‖² I.
+    Written with the half angle h = θ/2 and the quaternion (cos h, sin h ω) scaled by
+    1/cos h to (1, ṽ), ṽ = tan h ω, so that nothing cancels and only one (vectorised) tangent is
+    needed (numpy's float64 sin and cos are not vectorised):
+    R = I + λ(ṽ̂ + ṽ̂²) with λ = 2/(1 + t²), t = tan h, and ṽ̂² = ṽṽᵀ − ‖ṽ‖² I. Near θ = π,
+    t ≈ 1/(π/2 − h) stays below 1e19 for every double h, so t² never overflows; R is
+    orthogonal to the rounding of λ alone.
     """
     theta2 = x * x
     theta2 += y * y
@@ -231,48 +234,56 @@ def _exp_rows(x, y, z, out):
     if high == np.inf or low == 0.0:
         rare = (theta2 == np.inf) | ((theta2 == 0.0) & ((x != 0.0) | (y != 0.0) | (z != 0.0)))
         half[rare] = _scaled_half_norm(x[rare], y[rare], z[rare])
-    sh, q0 = np.sin(half), np.cos(half)
+    t = np.tan(half)
+    lam = np.multiply(t, t, out=theta2)
+    lam += 1.0
+    np.divide(2.0, lam, out=lam)  # λ = 2 / (1 + t²) = 2 cos² h
     if low == 0.0:
-        half[half == 0.0] = 1.0  # there r = 0, so g's value does not matter: keep it finite
-    g = 0.5 * sh
-    g /= half  # g = sin h / θ
-    vx, vy, vz = g * x, g * y, g * z  # v = sin h ω, the quaternion's vector part
-    g += g
-    ux, uy, uz = g * x, g * y, g * z  # u = 2v carries the factor 2 of 2 q₀ v̂ + 2 v̂²
-    _quaternion_rows(q0, (ux, uy, uz), (vx, vy, vz), out)
+        half[half == 0.0] = 1.0  # there r = 0 and t = 0: keep the ratio finite
+    a = np.divide(t, half, out=t)
+    a *= 0.5  # ṽ = tan h ω = (t / θ) r
+    vx, vy, vz = a * x, a * y, a * z
+    ux, uy, uz = lam * vx, lam * vy, lam * vz  # u = λ ṽ
+    _quaternion_rows((ux, uy, uz), (vx, vy, vz), out)
 
 
-def _quaternion_rows(q0, u, v, out):
-    """R = I + 2 q₀ v̂ + 2 v̂² from q₀ and u = 2v, v, into the 9 rows of ``out``."""
+def _quaternion_rows(u, v, out):
+    """R = I + û + (u vᵀ − (u·v) I) from u = λṽ and ṽ, into the 9 rows of ``out``."""
     (ux, uy, uz), (vx, vy, vz) = u, v
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
-    np.subtract(1.0, yy + zz, out=out[0])
-    np.subtract(xy, wz, out=out[1])
-    np.add(xz, wy, out=out[2])
-    np.add(xy, wz, out=out[3])
-    np.subtract(1.0, xx + zz, out=out[4])
-    np.subtract(yz, wx, out=out[5])
-    np.subtract(xz, wy, out=out[6])
-    np.add(yz, wx, out=out[7])
-    np.subtract(1.0, xx + yy, out=out[8])
+    t = np.add(yy, zz, out=vx)
+    np.subtract(1.0, t, out=out[0])
+    np.subtract(xy, uz, out=out[1])
+    np.add(xz, uy, out=out[2])
+    np.add(xy, uz, out=out[3])
+    np.add(xx, zz, out=t)
+    np.subtract(1.0, t, out=out[4])
+    np.subtract(yz, ux, out=out[5])
+    np.subtract(xz, uy, out=out[6])
+    np.add(yz, ux, out=out[7])
+    np.add(xx, yy, out=t)
+    np.subtract(1.0, t, out=out[8])
 
 
 def _exp_rotvec(r):
-    """exp of rotation vectors r (..., 3) -> (..., 3, 3), processed in chunks."""
+    """exp of rotation vectors r (..., 3) -> (..., 3, 3), processed in chunks.
+
+    Each chunk's results go straight into the strided columns of the (n, 9) output: a
+    buffer and a transposed copy would cost one more pass over the result.
+    """
+    if r.shape == (3,):  # one vector, whatever its dtype was: the same digits as _exp_one
+        return _exp_one(*r.tolist())
     batch = r.shape[:-1]
     flat = r.reshape(-1, 3)
     n = flat.shape[0]
     out = np.empty((n, 9))
-    buf = np.empty((9, min(n, _CHUNK)))
     with np.errstate(over="ignore"):  # θ² may overflow: _exp_rows then takes the scaled path
         for start in range(0, n, _CHUNK):
             stop = min(start + _CHUNK, n)
             rows = flat[start:stop].T
-            b = buf[:, : stop - start]
-            _exp_rows(rows[0], rows[1], rows[2], b)
-            out[start:stop] = b.T
+            o = out[start:stop].T
+            _exp_rows(rows[0], rows[1], rows[2], o)
     return out.reshape(batch + (3, 3))
 
 
@@ -281,14 +292,14 @@ def _exp_one(x, y, z):
     half = 0.5 * math.hypot(x, y, z)  # no overflow: hypot scales
     if half == math.inf:
         half = math.hypot(0.5 * x, 0.5 * y, 0.5 * z)
-    sh, q0 = math.sin(half), math.cos(half)
-    g = 0.5 * sh / half if half else 0.0
-    vx, vy, vz = g * x, g * y, g * z
-    g += g
-    ux, uy, uz = g * x, g * y, g * z
+    t = math.tan(half)
+    lam = 2.0 / (1.0 + t * t)
+    a = 0.5 * t / half if half else 0.0
+    vx, vy, vz = a * x, a * y, a * z
+    ux, uy, uz = lam * vx, lam * vy, lam * vz
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
+    wx, wy, wz = ux, uy, uz
     return np.array(
         (
             1.0 - (yy + zz),

@@ -483,8 +483,9 @@ def _validate_chunked(R, flat, tol, name):
         _check_chunk(R, np.ascontiguousarray(flat[start : start + _CHUNK].T), start, tol, name)
 
 
-def _log_rows(X, out, want_axis):
-    """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 rows of out; angles back.
+def _log_rows(X, v, out, theta, want_axis):
+    """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 (strided) rows of out,
+    angles into theta; v is a (3, m) scratch buffer.
 
     Both branches are computed for every element with plain arithmetic (no masks, no
     temporaries of the batch size) and blended: masked gathers cost more than the math.
@@ -494,13 +495,13 @@ def _log_rows(X, out, want_axis):
     c += r22
     c -= 1.0
     c *= 0.5
-    v = out  # v = sin θ ω, the skew part; the result overwrites it at the end
+    # v = sin θ ω, the skew part
     np.subtract(r21, r12, out=v[0])
     np.subtract(r02, r20, out=v[1])
     np.subtract(r10, r01, out=v[2])
     v *= 0.5
     s = np.sqrt(np.einsum("im,im->m", v, v))
-    theta = np.arctan2(s, c)
+    np.arctan2(s, c, out=theta)
     # Up to 90°: r = θ v / sin θ (θ / sin θ -> 1 as θ -> 0).
     near = (1.0 if want_axis else theta) / np.maximum(s, _TINY)
     tiny = s < _TINY
@@ -539,12 +540,11 @@ def _log_rows(X, out, want_axis):
     ux *= far_scale
     uy *= far_scale
     uz *= far_scale
-    v[0] += ux
-    v[1] += uy
-    v[2] += uz
+    np.add(v[0], ux, out=out[0])
+    np.add(v[1], uy, out=out[1])
+    np.add(v[2], uz, out=out[2])
     if want_axis and tiny.any():
-        v[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
-    return theta
+        out[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
 
 
 def _log_one(X, tol, want_axis):
@@ -595,9 +595,7 @@ def _log_impl(R, tol, name, want_axis):
         stop = min(start + _CHUNK, n)
         X = np.ascontiguousarray(flat[start:stop].T)
         _check_chunk(R, X, start, tol, name)  # validation in the same pass, while X is in cache
-        b = buf[:, : stop - start]
-        angle[start:stop] = _log_rows(X, b, want_axis)
-        vec[start:stop] = b.T
+        _log_rows(X, buf[:, : stop - start], vec[start:stop].T, angle[start:stop], want_axis)
     return vec.reshape(batch + (3,)), angle.reshape(batch)
 
 

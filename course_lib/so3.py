@@ -609,9 +609,11 @@ def _log_impl(R, tol, name, want_axis):
     vec = np.empty((n, 3))
     angle = np.empty(n)
     buf = np.empty((3, min(n, _CHUNK)))
+    entries = np.empty((9, min(n, _CHUNK)))
     for start in range(0, n, _CHUNK):
         stop = min(start + _CHUNK, n)
-        X = np.ascontiguousarray(flat[start:stop].T)
+        X = entries[:, : stop - start]
+        np.copyto(X, flat[start:stop].T)  # the entries as contiguous rows, one buffer reused
         _check_chunk(R, X, start, tol, name)  # validation in the same pass, while X is in cache
         _log_rows(X, buf[:, : stop - start], vec[start:stop].T, angle[start:stop], want_axis)
     return vec.reshape(batch + (3,)), angle.reshape(batch)

@@ -530,35 +530,38 @@ def _log_rows(X, v, out, theta, want_axis):
     if tiny.any():
         near[tiny] = 0.0 if want_axis else 1.0
     # Beyond 90°: the dominant column of N = R + Rᵀ − 2cI = 2(1 − cos θ) ω ωᵀ, signed by v.
-    N = np.empty((9, X.shape[1]))  # N row by row; its diagonal is 2d, d = diag(R) − c
-    d0, d1, d2 = N[0], N[4], N[8]
-    np.subtract(r00, c, out=d0)
-    np.subtract(r11, c, out=d1)
-    np.subtract(r22, c, out=d2)
-    pick = np.empty_like(v)  # one-hot rows: which column is dominant (ties: the first)
+    d0, d1, d2 = r00 - c, r11 - c, r22 - c
+    n01, n02, n12 = r01 + r10, r02 + r20, r12 + r21
     w0 = (d0 >= d1) & (d0 >= d2)
     w1 = (d1 >= d2) & ~w0
-    pick[0] = w0
-    pick[1] = w1
-    pick[2] = ~(w0 | w1)
-    N[::4] *= 2.0
-    np.add(r01, r10, out=N[1])
-    np.add(r02, r20, out=N[2])
-    np.add(r12, r21, out=N[5])
-    N[3], N[6], N[7] = N[1], N[2], N[5]
-    u = np.empty_like(v)
-    ux, uy, uz = u
-    for row, Nrow in zip(u, N.reshape(3, 3, -1)):
-        np.einsum("km,km->m", Nrow, pick, out=row)  # u = N · pick, the dominant column
-    norm2 = np.einsum("im,im->m", u, u)
-    dot = np.einsum("im,im->m", u, v)
+    w2 = ~(w0 | w1)
+    d0 += d0
+    d1 += d1
+    d2 += d2
+    ux = d0 * w0
+    ux += n01 * w1
+    ux += n02 * w2
+    uy = n01 * w0
+    uy += d1 * w1
+    uy += n12 * w2
+    uz = n02 * w0
+    uz += n12 * w1
+    uz += d2 * w2
+    norm2 = ux * ux
+    norm2 += uy * uy
+    norm2 += uz * uz
+    dot = ux * v[0]
+    dot += uy * v[1]
+    dot += uz * v[2]
     far_scale = (1.0 if want_axis else theta) / np.sqrt(np.maximum(norm2, _TINY))
     np.copysign(far_scale, dot, out=far_scale)  # dot = +0 at exactly π keeps u's own sign
     far = c < 0.0
     far_scale *= far
     near *= ~far
     v *= near
-    u *= far_scale
+    ux *= far_scale
+    uy *= far_scale
+    uz *= far_scale
     np.add(v[0], ux, out=out[0])
     np.add(v[1], uy, out=out[1])
     np.add(v[2], uz, out=out[2])
@@ -610,11 +613,9 @@ def _log_impl(R, tol, name, want_axis):
     vec = np.empty((n, 3))
     angle = np.empty(n)
     buf = np.empty((3, min(n, _CHUNK)))
-    entries = np.empty((9, min(n, _CHUNK)))
     for start in range(0, n, _CHUNK):
         stop = min(start + _CHUNK, n)
-        X = entries[:, : stop - start]
-        np.copyto(X, flat[start:stop].T)  # the entries as contiguous rows, one buffer reused
+        X = np.ascontiguousarray(flat[start:stop].T)
         _check_chunk(R, X, start, tol, name)  # validation in the same pass, while X is in cache
         _log_rows(X, buf[:, : stop - start], vec[start:stop].T, angle[start:stop], want_axis)
     return vec.reshape(batch + (3,)), angle.reshape(batch)

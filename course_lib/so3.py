@@ -299,17 +299,16 @@ def _exp_one(x, y, z):
     ux, uy, uz = lam * vx, lam * vy, lam * vz
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    wx, wy, wz = ux, uy, uz
     return np.array(
         (
             1.0 - (yy + zz),
-            xy - wz,
-            xz + wy,
-            xy + wz,
+            xy - uz,
+            xz + uy,
+            xy + uz,
             1.0 - (xx + zz),
-            yz - wx,
-            xz - wy,
-            yz + wx,
+            yz - ux,
+            xz - uy,
+            yz + ux,
             1.0 - (xx + yy),
         )
     ).reshape(3, 3)

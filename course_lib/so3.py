@@ -214,11 +214,14 @@ def _scaled_half_norm(x, y, z):
 
 
 def _exp_rows(x, y, z, out):
-    """Rodrigues' formula on rotation-vector rows, written into the 9 rows of ``out``.
+    """Rodrigues' formula on rotation-vector rows, written into the 9 (strided) rows of ``out``.
 
-    Written with the half angle h = θ/2, v = sin h ω and q₀ = cos h, so that nothing cancels:
-    sin θ ω̂ = 2 q₀ v̂ and (1 − cos θ) ω̂² = 2 v̂², hence
-    R = I + 2 q₀ v̂ + 2 v̂² with v̂² = v vᵀ − ‖v‖² I.
+    Written with the half angle h = θ/2 and the quaternion (cos h, sin h ω) scaled by
+    1/cos h to (1, ṽ), ṽ = tan h ω, so that nothing cancels and only one (vectorised) tangent is
+    needed (numpy's float64 sin and cos are not vectorised):
+    R = I + λ(ṽ̂ + ṽ̂²) with λ = 2/(1 + t²), t = tan h, and ṽ̂² = ṽṽᵀ − ‖ṽ‖² I. Near θ = π,
+    t ≈ 1/(π/2 − h) stays below 1e19 for every double h, so t² never overflows; R is
+    orthogonal to the rounding of λ alone.
     """
     theta2 = x * x
     theta2 += y * y
@@ -231,48 +234,56 @@ def _exp_rows(x, y, z, out):
     if high == np.inf or low == 0.0:
         rare = (theta2 == np.inf) | ((theta2 == 0.0) & ((x != 0.0) | (y != 0.0) | (z != 0.0)))
         half[rare] = _scaled_half_norm(x[rare], y[rare], z[rare])
-    sh, q0 = np.sin(half), np.cos(half)
+    t = np.tan(half)
+    lam = np.multiply(t, t, out=theta2)
+    lam += 1.0
+    np.divide(2.0, lam, out=lam)  # λ = 2 / (1 + t²) = 2 cos² h
     if low == 0.0:
-        half[half == 0.0] = 1.0  # there r = 0, so g's value does not matter: keep it finite
-    g = 0.5 * sh
-    g /= half  # g = sin h / θ
-    vx, vy, vz = g * x, g * y, g * z  # v = sin h ω, the quaternion's vector part
-    g += g
-    ux, uy, uz = g * x, g * y, g * z  # u = 2v carries the factor 2 of 2 q₀ v̂ + 2 v̂²
-    _quaternion_rows(q0, (ux, uy, uz), (vx, vy, vz), out)
+        half[half == 0.0] = 1.0  # there r = 0 and t = 0: keep the ratio finite
+    a = np.divide(t, half, out=t)
+    a *= 0.5  # ṽ = tan h ω = (t / θ) r
+    vx, vy, vz = a * x, a * y, a * z
+    ux, uy, uz = lam * vx, lam * vy, lam * vz  # u = λ ṽ
+    _quaternion_rows((ux, uy, uz), (vx, vy, vz), out)
 
 
-def _quaternion_rows(q0, u, v, out):
-    """R = I + 2 q₀ v̂ + 2 v̂² from q₀ and u = 2v, v, into the 9 rows of ``out``."""
+def _quaternion_rows(u, v, out):
+    """R = I + û + (u vᵀ − (u·v) I) from u = λṽ and ṽ, into the 9 rows of ``out``."""
     (ux, uy, uz), (vx, vy, vz) = u, v
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
-    np.subtract(1.0, yy + zz, out=out[0])
-    np.subtract(xy, wz, out=out[1])
-    np.add(xz, wy, out=out[2])
-    np.add(xy, wz, out=out[3])
-    np.subtract(1.0, xx + zz, out=out[4])
-    np.subtract(yz, wx, out=out[5])
-    np.subtract(xz, wy, out=out[6])
-    np.add(yz, wx, out=out[7])
-    np.subtract(1.0, xx + yy, out=out[8])
+    t = np.add(yy, zz, out=vx)
+    np.subtract(1.0, t, out=out[0])
+    np.subtract(xy, uz, out=out[1])
+    np.add(xz, uy, out=out[2])
+    np.add(xy, uz, out=out[3])
+    np.add(xx, zz, out=t)
+    np.subtract(1.0, t, out=out[4])
+    np.subtract(yz, ux, out=out[5])
+    np.subtract(xz, uy, out=out[6])
+    np.add(yz, ux, out=out[7])
+    np.add(xx, yy, out=t)
+    np.subtract(1.0, t, out=out[8])
 
 
 def _exp_rotvec(r):
-    """exp of rotation vectors r (..., 3) -> (..., 3, 3), processed in chunks."""
+    """exp of rotation vectors r (..., 3) -> (..., 3, 3), processed in chunks.
+
+    Each chunk's results go straight into the strided columns of the (n, 9) output: a
+    buffer and a transposed copy would cost one more pass over the result.
+    """
+    if r.shape == (3,):  # one vector, whatever its dtype was: the same digits as _exp_one
+        return _exp_one(*r.tolist())
     batch = r.shape[:-1]
     flat = r.reshape(-1, 3)
     n = flat.shape[0]
     out = np.empty((n, 9))
-    buf = np.empty((9, min(n, _CHUNK)))
     with np.errstate(over="ignore"):  # θ² may overflow: _exp_rows then takes the scaled path
         for start in range(0, n, _CHUNK):
             stop = min(start + _CHUNK, n)
             rows = flat[start:stop].T
-            b = buf[:, : stop - start]
-            _exp_rows(rows[0], rows[1], rows[2], b)
-            out[start:stop] = b.T
+            o = out[start:stop].T
+            _exp_rows(rows[0], rows[1], rows[2], o)
     return out.reshape(batch + (3, 3))
 
 
@@ -281,24 +292,23 @@ def _exp_one(x, y, z):
     half = 0.5 * math.hypot(x, y, z)  # no overflow: hypot scales
     if half == math.inf:
         half = math.hypot(0.5 * x, 0.5 * y, 0.5 * z)
-    sh, q0 = math.sin(half), math.cos(half)
-    g = 0.5 * sh / half if half else 0.0
-    vx, vy, vz = g * x, g * y, g * z
-    g += g
-    ux, uy, uz = g * x, g * y, g * z
+    t = math.tan(half)
+    lam = 2.0 / (1.0 + t * t)
+    a = 0.5 * t / half if half else 0.0
+    vx, vy, vz = a * x, a * y, a * z
+    ux, uy, uz = lam * vx, lam * vy, lam * vz
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    wx, wy, wz = q0 * ux, q0 * uy, q0 * uz
     return np.array(
         (
             1.0 - (yy + zz),
-            xy - wz,
-            xz + wy,
-            xy + wz,
+            xy - uz,
+            xz + uy,
+            xy + uz,
             1.0 - (xx + zz),
-            yz - wx,
-            xz - wy,
-            yz + wx,
+            yz - ux,
+            xz - uy,
+            yz + ux,
             1.0 - (xx + yy),
         )
     ).reshape(3, 3)
@@ -455,10 +465,32 @@ def _rotation_error(R, index, tol, name):
     )
 
 
+_GRAM_PAIRS = ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))
+
+
+def _residual_chunk(X):
+    """_residual_rows for a chunk's 9 contiguous entry rows, with one einsum per dot product
+    (a fused multiply-sum over the three rows: fewer passes than products and sums apart)."""
+    cols = X.reshape(3, 3, -1)  # cols[i, j] = the entries r_ij
+    G = np.empty((6, X.shape[1]))
+    for row, (j, k) in zip(G, _GRAM_PAIRS):
+        np.einsum("im,im->m", cols[:, j], cols[:, k], out=row)  # (RᵀR)_jk
+    G[:3] -= 1.0
+    orth2 = np.einsum("im,im->m", G[3:], G[3:])
+    orth2 += orth2
+    orth2 += np.einsum("im,im->m", G[:3], G[:3])
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
+    cof = G[:3]  # reused: the column-0 cofactors, det = Σ r_i0 C_i0
+    np.subtract(r11 * r22, r21 * r12, out=cof[0])
+    np.subtract(r21 * r02, r01 * r22, out=cof[1])
+    np.subtract(r01 * r12, r11 * r02, out=cof[2])
+    return orth2, np.einsum("im,im->m", cols[:, 0], cof)
+
+
 def _check_chunk(R, X, start, tol, name):
     """Raise the ValueError of the first matrix of a chunk (entry rows X) not in SO(3)."""
     with np.errstate(over="ignore", invalid="ignore"):  # huge entries fail, without a warning
-        orth2, det = _residual_rows(X)
+        orth2, det = _residual_chunk(X)
         ok = (orth2 <= tol * tol) & (np.abs(det - 1.0) <= tol)
     if not ok.all():
         bad = start + int(np.argmin(ok))
@@ -472,8 +504,9 @@ def _validate_chunked(R, flat, tol, name):
         _check_chunk(R, np.ascontiguousarray(flat[start : start + _CHUNK].T), start, tol, name)
 
 
-def _log_rows(X, out, want_axis):
-    """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 rows of out; angles back.
+def _log_rows(X, v, out, theta, want_axis):
+    """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 (strided) rows of out,
+    angles into theta; v is a (3, m) scratch buffer.
 
     Both branches are computed for every element with plain arithmetic (no masks, no
     temporaries of the batch size) and blended: masked gathers cost more than the math.
@@ -483,13 +516,13 @@ def _log_rows(X, out, want_axis):
     c += r22
     c -= 1.0
     c *= 0.5
-    v = out  # v = sin θ ω, the skew part; the result overwrites it at the end
+    # v = sin θ ω, the skew part
     np.subtract(r21, r12, out=v[0])
     np.subtract(r02, r20, out=v[1])
     np.subtract(r10, r01, out=v[2])
     v *= 0.5
     s = np.sqrt(np.einsum("im,im->m", v, v))
-    theta = np.arctan2(s, c)
+    np.arctan2(s, c, out=theta)
     # Up to 90°: r = θ v / sin θ (θ / sin θ -> 1 as θ -> 0).
     near = (1.0 if want_axis else theta) / np.maximum(s, _TINY)
     tiny = s < _TINY
@@ -528,12 +561,11 @@ def _log_rows(X, out, want_axis):
     ux *= far_scale
     uy *= far_scale
     uz *= far_scale
-    v[0] += ux
-    v[1] += uy
-    v[2] += uz
+    np.add(v[0], ux, out=out[0])
+    np.add(v[1], uy, out=out[1])
+    np.add(v[2], uz, out=out[2])
     if want_axis and tiny.any():
-        v[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
-    return theta
+        out[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
 
 
 def _log_one(X, tol, want_axis):
@@ -584,9 +616,7 @@ def _log_impl(R, tol, name, want_axis):
         stop = min(start + _CHUNK, n)
         X = np.ascontiguousarray(flat[start:stop].T)
         _check_chunk(R, X, start, tol, name)  # validation in the same pass, while X is in cache
-        b = buf[:, : stop - start]
-        angle[start:stop] = _log_rows(X, b, want_axis)
-        vec[start:stop] = b.T
+        _log_rows(X, buf[:, : stop - start], vec[start:stop].T, angle[start:stop], want_axis)
     return vec.reshape(batch + (3,)), angle.reshape(batch)
 
 

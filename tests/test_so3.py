@@ -91,6 +91,21 @@ def test_exp_is_orthogonal_with_unit_determinant_to_a_few_epsilons():
     assert np.abs(np.linalg.det(R) - 1).max() <= 10 * EPS
 
 
+@pytest.mark.parametrize("turns", [1, 3, 5])
+def test_exp_stays_accurate_where_the_half_angle_tangent_blows_up(turns):
+    # exp takes cos(θ/2) and sin(θ/2) from t = tan(θ/2); near θ = 2π·(odd) t is ~1e16
+    theta = turns * 2 * np.pi + np.array([0.0, 1e-12, -1e-12, 1e-6, -1e-6])
+    r = sample_axes(40)[:, None, :] * theta[:, None]
+    R = so3.exp(r)
+    assert np.abs(R - Rotation.from_rotvec(r.reshape(-1, 3)).as_matrix().reshape(R.shape)).max() < (
+        8 * EPS * turns
+    )
+    assert np.abs(np.swapaxes(R, -1, -2) @ R - np.eye(3)).max() <= 10 * EPS
+    for w, M in zip(r[:, 0], R[:, 0]):  # the single-call path (math.tan) agrees, to the
+        atol = 4e-16 * np.abs(w).max()  # rounding of ‖w‖ (hypot there, a square root here)
+        np.testing.assert_allclose(so3.exp(w), M, rtol=0, atol=atol)
+
+
 def test_exp_with_theta_equals_exp_of_rotation_vector():
     axes = sample_axes(50)
     assert np.allclose(so3.exp(axes, 0.7), so3.exp(0.7 * axes), atol=1e-15)

@@ -624,3 +624,38 @@ def test_regression_a_huge_float32_answer_is_checked_quickly():
     start = time.perf_counter()
     result = check("chain_vector", np.array([1e30, 3, -2], dtype=np.float32))
     assert time.perf_counter() - start < 1.0 and "component 1 is wrong" in result.message
+
+
+def test_regression_inner_products_written_as_1x1_matrices_were_refused():
+    # x.T * z is how the chapter writes xᵀz: a list of such 1x1 matrices is a right answer
+    result = check("bac_cab", [x.T * z, -(x.T * y)])
+    assert result.ok, result.message
+
+
+def test_regression_a_varying_factor_hint_spoke_of_omega_where_there_is_none():
+    chapter_one = check("lagrange_identity", xx * yy - xy)
+    assert "changes with the symbols" in chapter_one.message
+    assert "ω" not in chapter_one.message.split("Hint:")[0]
+    assert "‖ω‖" in check("hat_fifth", omega.dot(omega) * W).message
+
+
+def test_regression_a_sign_error_in_a_polynomial_in_w_was_called_a_transpose_only():
+    wrong = -sp.cos(theta) * W + sp.sin(theta) * W**2
+    result = check("rodrigues_derivative", wrong)
+    assert not result.ok
+    assert "the W term" in result.message and "Wᵀ = −W" in result.message
+
+
+@pytest.mark.parametrize(
+    ("name", "typed"), [("angle_from_lengths", 1.0472), ("pendulum_speed", 3.14)]
+)
+def test_regression_a_rounded_decimal_got_only_the_value_is_not_right(name, typed):
+    result = check(name, typed)
+    assert not result.ok and "only a few digits" in result.message
+    assert "only a few digits" not in check(name, 0.5).message  # a short exact decimal
+
+
+def test_regression_theta_instead_of_cos_theta_got_a_factor_hint():
+    cos_theta = (sp.cos(alpha) + sp.cos(beta) + sp.cos(alpha) * sp.cos(beta) - 1) / 2
+    assert check("composed_angle", cos_theta).ok
+    assert "asks for cos θ" in check("composed_angle", sp.acos(cos_theta)).message

@@ -114,13 +114,14 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
         statement=r"""
 Let $R = R_x(\alpha)\,R_z(\beta)$. Find $\cos\theta$, where $\theta$ is the rotation angle of
 $R$, as an expression in `alpha` and `beta`; then check that $R_z(\beta)R_x(\alpha)$, a
-different rotation, has the same angle.
+different rotation, has the same angle. Give a scalar expression in `alpha` and `beta`.
 """,
         answer=Expr(shape=(), domain=(alpha, beta)),
         tip="tr R = 1 + 2 cos θ; only the diagonal entries of the product are needed.",
         mistakes={
             "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
             "sum": "angles add only for rotations about the same axis.",
+            "angle": "that is the angle θ itself; the exercise asks for cos θ.",
         },
     ),
     Exercise(

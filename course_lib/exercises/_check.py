@@ -6,6 +6,7 @@ import numpy as np
 import sympy as sp
 from sympy.matrices.expressions import MatrixSymbol
 
+from .. import symbolic as S
 from . import _engine as E
 from ._model import Choice, Expr, Value
 from ._reading import Rejected, describe_shape, matrix_degree, read_answer, read_choice
@@ -107,6 +108,10 @@ def _symmetry_hint(A, Ev):
     return None
 
 
+def _uses_omega(spec):
+    return bool(set(spec.domain) & set(S.omega)) or S.W in set(spec.allowed or ())
+
+
 def _generic_hint(spec, A, Ev):
     shape = spec.shape
     zero = np.zeros_like(Ev)
@@ -118,6 +123,11 @@ def _generic_hint(spec, A, Ev):
         and E.close(A, np.swapaxes(Ev, -1, -2))
         and not E.close(Ev, np.swapaxes(Ev, -1, -2))
     ):
+        if spec.matrix_degree is not None and S.W in set(spec.allowed or ()):
+            return (
+                "your answer is the transpose of the right one; for a polynomial in W that "
+                "means the W term (an odd power) has the wrong sign, since Wᵀ = −W."
+            )
         return "your answer is the transpose of the right one (rows and columns swapped)."
     if nonzero and E.close(A, zero):
         return "your answer is zero, the right one is not."
@@ -132,9 +142,10 @@ def _generic_hint(spec, A, Ev):
         if np.all(norms > E.TOL):
             ck = np.sum(A * Ev, axis=axes) / norms
             if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
+                example = " (for instance the powers of ‖ω‖)" if _uses_omega(spec) else ""
                 return (
                     "your answer is the right one times a factor that changes with the "
-                    "symbols: check the scalar factors (for instance the powers of ‖ω‖)."
+                    f"symbols: check the scalar factors{example}."
                 )
     if len(shape) == 2 and shape[0] == shape[1]:
         hint = _symmetry_hint(A, Ev)
@@ -262,6 +273,23 @@ def _value_hint(ex, fp, v):
     return _positions(~ok.reshape(spec.shape), spec.shape)
 
 
+_ROUNDED = (
+    " Your answer holds decimals with only a few digits: the check needs about 9, so give "
+    "the exact value (sp.sqrt(2), sp.pi / 3, sp.acos(...)) or let Python compute it instead "
+    "of typing a rounded number."
+)
+
+
+def _typed_rounded(M):
+    """Does the answer hold a float typed with 3 to 6 significant digits (1.0472, 3.14)?"""
+    for node in sp.preorder_traversal(M):
+        if isinstance(node, sp.Float):
+            f = float(node)
+            if f != round(f) and f == float(f"{f:.6g}") and f != float(f"{f:.2g}"):
+                return True
+    return False
+
+
 def _single_precision(answer):
     """Does a numeric answer hold numpy floats of less than double precision (float32 ...)?"""
     items = answer if isinstance(answer, (list, tuple)) else [answer]
@@ -312,7 +340,10 @@ def judge_value(ex, fp, answer):
         return "wrong", _positions(
             ~ok.reshape(ex.answer.shape), ex.answer.shape
         ) + " Also, " + _SINGLE
-    return "wrong", _value_hint(ex, fp, v)
+    hint = _value_hint(ex, fp, v)
+    if _typed_rounded(M) and not any(hint == text for text in ex.mistakes.values()):
+        hint += _ROUNDED
+    return "wrong", hint
 
 
 def judge_choice(ex, fp, answer):

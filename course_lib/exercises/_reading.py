@@ -223,6 +223,8 @@ def matrix_degree(e):
 
 def _scalar(v):
     kind = type(v)
+    if kind in _EXPLICIT and v.shape == (1, 1):  # x.T * y: a 1x1 Matrix stands for the number
+        return _scalar(v[0, 0])
     if kind is bool or kind is np.bool_:
         raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
     if kind is int or kind in _NUMPY_INTS:

@@ -659,3 +659,26 @@ def test_regression_theta_instead_of_cos_theta_got_a_factor_hint():
     cos_theta = (sp.cos(alpha) + sp.cos(beta) + sp.cos(alpha) * sp.cos(beta) - 1) / 2
     assert check("composed_angle", cos_theta).ok
     assert "asks for cos θ" in check("composed_angle", sp.acos(cos_theta)).message
+
+
+def test_regression_a_wrong_coefficient_of_a_polynomial_in_w_got_all_9_entries_are_wrong():
+    wrong_sign = check("rodrigues_derivative", sp.cos(theta) * W - sp.sin(theta) * W**2)
+    assert "the coefficient of W² has the wrong sign" in wrong_sign.message
+    n = sp.sqrt(omega.dot(omega))
+    no_division = sp.Identity(3) + sp.sin(n * theta) * W + (1 - sp.cos(n * theta)) * W**2
+    message = check("exp_general_axis", no_division).message
+    assert "the coefficients of W and W² are wrong (the rest is right)" in message
+    assert "entries" not in message
+
+
+def test_regression_an_entry_of_a_matrix_symbol_got_an_unexplained_not_allowed():
+    result = check("half_turn", sp.Matrix(2 * u * u.T - sp.Identity(3)))
+    assert result.status == "not allowed"
+    assert "matrix expression itself" in result.message
+
+
+def test_regression_a_series_with_its_order_term_got_an_unexplained_not_allowed():
+    series = sp.sin(alpha).series(alpha, 0, 3)  # alpha + O(alpha**3)
+    result = check("small_angle", [series, alpha * beta / 2, beta])
+    assert result.status == "not allowed" and ".removeO()" in result.message
+    assert check("small_angle", [series.removeO(), alpha * beta / 2, beta]).ok

@@ -124,6 +124,7 @@ smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
             "a > 0 the point turns counterclockwise.",
             "larger": "that a works, but a smaller positive a does too.",
+            "next_turn": "that a works (a full turn more), but a smaller positive a does too.",
         },
     ),
     Exercise(

@@ -112,7 +112,45 @@ def _uses_omega(spec):
     return bool(set(spec.domain) & set(S.omega)) or S.W in set(spec.allowed or ())
 
 
-def _generic_hint(spec, A, Ev):
+_W_BASIS = ("I", "W", "W²")
+
+
+def _w_coefficients(M, H):
+    """Coefficients (NPOINTS, 3) of M in the basis I, H, H² at each point, or None when M is
+    not in their span."""
+    basis = np.stack([np.broadcast_to(np.eye(3), H.shape), H, H @ H], -1).reshape(-1, 9, 3)
+    coeffs = np.stack([np.linalg.lstsq(b, m.ravel(), rcond=None)[0] for b, m in zip(basis, M)])
+    if not E.close(np.einsum("kij,kj->ki", basis, coeffs), M.reshape(-1, 9)):
+        return None
+    return coeffs
+
+
+def _w_coefficient_hint(spec, A, Ev, pts):
+    """For a polynomial in W (ω̂): which of the coefficients of I, W, W² is wrong."""
+    if pts is None or spec.matrix_degree is None or S.W not in set(spec.allowed or ()):
+        return None
+    w = np.stack([pts[s] for s in S.omega], -1)
+    H = np.zeros((len(w), 3, 3))
+    H[:, 0, 1], H[:, 0, 2], H[:, 1, 2] = -w[:, 2], w[:, 1], -w[:, 0]
+    H -= np.swapaxes(H, -1, -2)
+    cA, cE = _w_coefficients(A, H), _w_coefficients(Ev, H)
+    if cA is None or cE is None:
+        return None
+    same = lambda a, b: np.allclose(a, b, rtol=1e-6, atol=1e-6)  # noqa: E731 - noise of lstsq
+    bad = [j for j in range(3) if not same(cA[:, j], cE[:, j])]
+    if not bad:
+        return None
+    names = _join([_W_BASIS[j] for j in bad])
+    if all(same(cA[:, j], -cE[:, j]) for j in bad):
+        verb = "have" if len(bad) > 1 else "has"
+        return f"the coefficient of {names} {verb} the wrong sign."
+    noun = "coefficients" if len(bad) > 1 else "coefficient"
+    verb = "are" if len(bad) > 1 else "is"
+    rest = " (the rest is right)" if len(bad) < 3 else ""
+    return f"the {noun} of {names} {verb} wrong{rest}."
+
+
+def _generic_hint(spec, A, Ev, pts=None):
     shape = spec.shape
     zero = np.zeros_like(Ev)
     nonzero = not E.close(Ev, zero)
@@ -154,7 +192,10 @@ def _generic_hint(spec, A, Ev):
         D = A - Ev
         s = np.trace(D, axis1=-2, axis2=-1) / shape[0]
         if E.close(D, s[:, None, None] * np.eye(shape[0])):
-            msg = "your answer differs from the right one by a multiple of the identity."
+            msg = (
+                "your answer differs from the right one by a multiple of the identity: "
+                "check its I term."
+            )
             return msg + (" " + _UNIT_HINT if spec.unit_omega else "")
     per_point = [E.close(a[None], e[None]) for a, e in zip(A, Ev)]
     if any(per_point):
@@ -163,6 +204,9 @@ def _generic_hint(spec, A, Ev):
             "over their whole range (a truncated series, or a formula valid only for some "
             "values?)."
         )
+    hint = _w_coefficient_hint(spec, A, Ev, pts)
+    if hint:
+        return hint
     if shape == ():
         return "your expression is not equal to the right one."
     bad = np.zeros(A.shape[1:], dtype=bool)
@@ -216,7 +260,7 @@ def judge_expr(ex, fp, answer):
         hint = _property_hint(ex, M, syms, pts)
         if hint:
             return "wrong", hint
-    return "wrong", _generic_hint(spec, A, Ev)
+    return "wrong", _generic_hint(spec, A, Ev, pts)
 
 
 def _numbers(M):

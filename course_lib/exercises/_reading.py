@@ -25,6 +25,7 @@ from sympy.matrices.expressions import (
     Transpose,
     ZeroMatrix,
 )
+from sympy.matrices.expressions.matexpr import MatrixElement
 
 __all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
 
@@ -99,6 +100,17 @@ def _not_allowed(node):
         why = "the exercise asks for the answer without an inverse"
     elif isinstance(node, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
         why = "evaluate it first (.doit()) and simplify the result"
+    elif isinstance(node, sp.Order):
+        why = "a series keeps its O(...) term: drop it with .removeO()"
+    elif isinstance(node, MatrixElement):
+        return Rejected(
+            f"not allowed here: {node}, an entry of a matrix symbol or matrix expression "
+            "(from indexing it, or from sp.Matrix(...) of a matrix expression). Give the "
+            "matrix expression itself, with numbers or the exercise's scalar symbols as "
+            "coefficients; an inner product such as uᵀu is a number you can work out "
+            "(for a unit vector, uᵀu = 1).",
+            "not allowed",
+        )
     else:
         why = "give an expression built from +, −, ·, powers and elementary functions"
     return Rejected(f"not allowed here: {name} ({why}).", "not allowed")

@@ -58,7 +58,11 @@ MISTAKES = {
         "mirror": "sp.Identity(3) - 2 * u * u.T",
         "inner": "2 * omega.dot(omega) * sp.eye(3) - sp.eye(3)",
     },
-    "planar_ode": {"direction": "[sp.pi / 2, -2]", "larger": "[3 * sp.pi / 2, -2]"},
+    "planar_ode": {
+        "direction": "[sp.pi / 2, -2]",
+        "larger": "[3 * sp.pi / 2, -2]",
+        "next_turn": "[5 * sp.pi / 2, 2]",
+    },
     "exp_general_axis": {"unit": "sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2"},
     "spatial_angular_velocity": {"body": "[sp.cos(t), -sp.sin(t), 1]", "sum": "[1, 0, 1]"},
 }

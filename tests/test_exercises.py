@@ -682,3 +682,24 @@ def test_regression_a_series_with_its_order_term_got_an_unexplained_not_allowed(
     result = check("small_angle", [series, alpha * beta / 2, beta])
     assert result.status == "not allowed" and ".removeO()" in result.message
     assert check("small_angle", [series.removeO(), alpha * beta / 2, beta]).ok
+
+
+@pytest.mark.parametrize(
+    "container",
+    [sp.Tuple, sp.Array, lambda v: [sp.Tuple(*v)]],
+    ids=["Tuple (nonlinsolve)", "Array", "list of one Tuple"],
+)
+def test_regression_a_right_answer_in_a_sympy_tuple_or_array_was_called_an_equation(container):
+    result = check("ode_shifted", container([sp.log(2), sp.Rational(3, 2)]))
+    assert result.ok, result.message
+
+
+@pytest.mark.filterwarnings("ignore::PendingDeprecationWarning")  # numpy's view of np.matrix
+def test_regression_numpy_matrix_was_called_a_class_of_your_own():
+    result = check("motion_from_points", np.matrix([[0, 0, 1], [0, -1, 0], [1, 0, 0]]))
+    assert result.ok, result.message
+
+
+def test_regression_a_dict_from_solve_got_could_not_read_an_entry():
+    result = check("ode_shifted", [{sp.Symbol("a"): sp.log(2)}, 1.5])
+    assert not result.ok and "dict" in result.message and "sol[" in result.message

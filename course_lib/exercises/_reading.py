@@ -249,6 +249,11 @@ def _scalar(v):
         if v.imag != 0:
             raise Rejected("your answer is complex; a real answer is expected.")
         return sp.Float(v.real)
+    if kind is dict:
+        raise Rejected(
+            "your answer holds a dict (from sp.solve(..., dict=True)?): give the values "
+            "themselves, e.g. [sol[a], sol[b]], in the order the exercise asks for."
+        )
     if kind is str:
         raise Rejected(
             "your answer is a string (text), not a string of numbers or "
@@ -280,8 +285,30 @@ def _scalar(v):
     raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an expression.")
 
 
+_ARRAYS = (
+    sp.ImmutableDenseNDimArray,
+    sp.MutableDenseNDimArray,
+    sp.ImmutableSparseNDimArray,
+    sp.MutableSparseNDimArray,
+)
+
+
+def _plain(answer):
+    """sympy's own containers (a Tuple from nonlinsolve, an N-dim Array, numpy's matrix) as
+    the plain list, tuple or array they stand for; anything else unchanged."""
+    kind = type(answer)
+    if kind is sp.Tuple:
+        return tuple(answer)
+    if kind in _ARRAYS:
+        return answer.tolist()
+    if kind is np.matrix:
+        return np.asarray(answer)
+    return answer
+
+
 def _rows(answer):
     """Nested lists / tuples / arrays as a list of rows of sympy scalars."""
+    answer = _plain(answer)
     kind = type(answer)
     if kind is np.ndarray:
         if answer.dtype.kind == "b":
@@ -296,6 +323,7 @@ def _rows(answer):
         return [[_scalar(answer)]], "a scalar"
     rows = []
     for r in answer:
+        r = _plain(r)
         if type(r) is np.ndarray:
             r = r.tolist()
         if type(r) in (list, tuple):
@@ -339,6 +367,7 @@ def read_answer(answer, shape, symbols, numeric=False):
     """
     if answer is None:
         raise Rejected("no answer yet (the answer variable is still None).", "no answer")
+    answer = _plain(answer)
     kind = type(answer)
     if isinstance(answer, MatrixExpr) and kind not in _EXPLICIT:
         if kind not in _MATRIX_TYPES and kind is not sp.MatrixSymbol:

@@ -703,3 +703,8 @@ def test_regression_numpy_matrix_was_called_a_class_of_your_own():
 def test_regression_a_dict_from_solve_got_could_not_read_an_entry():
     result = check("ode_shifted", [{sp.Symbol("a"): sp.log(2)}, 1.5])
     assert not result.ok and "dict" in result.message and "sol[" in result.message
+
+
+def test_regression_a_pair_in_the_wrong_order_got_components_1_and_2_are_wrong():
+    result = check("ode_shifted", [sp.Rational(3, 2), sp.log(2)])
+    assert not result.ok and "reverse order" in result.message

@@ -289,6 +289,11 @@ def _value_hint(ex, fp, v):
     ok = E.match_cells(name, v, fp["cells"])
     if np.any(v != 0) and E.match_cells(name, -v, fp["cells"]).all():
         return "your answer is the negative of the right one: check the signs."
+    if len(spec.shape) == 1 and E.match_cells(name, v[::-1], fp["cells"]).all():
+        return (
+            "your components are in the reverse order: give them in the order the exercise "
+            "asks for."
+        )
     if len(spec.shape) == 2:
         vt = v.reshape(spec.shape).T.ravel()
         if E.match_cells(name, vt, fp["cells"]).all():

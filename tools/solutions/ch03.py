@@ -52,7 +52,12 @@ MISTAKES = {
         "interval": "[sp.log(4) / 3, 3 * 4 ** sp.Rational(-1, 3)]",
         "at_zero": "[sp.log(2), 3]",
     },
-    "pendulum_speed": {"angle": "2 * angle.subs(tau, sp.pi / 6)"},
+    "pendulum_speed": {
+        "angle": "2 * angle.subs(tau, sp.pi / 6)",
+        "no_length": "sp.Abs(rate).subs(tau, sp.pi / 6)",
+        "no_chain": "sp.Abs(2 * rate / 3).subs(tau, sp.pi / 6)",
+        "signed": "(2 * rate).subs(tau, sp.pi / 6)",
+    },
     "hat_fifth": {"unit": "W"},
     "half_turn": {
         "mirror": "sp.Identity(3) - 2 * u * u.T",

@@ -27,7 +27,9 @@ Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
         tip="Form R_ab and R_bc from the axes (as columns) and let the subscripts cancel.",
         mistakes={
             "order": "the subscripts must cancel: R_ac = R_ab R_bc (the two inner b's "
-            "meet), not R_bc R_ab."
+            "meet), not R_bc R_ab.",
+            "rows": "the axes of a frame are the columns of its rotation matrix, not its "
+            "rows: R_ab = [x_ab y_ab z_ab].",
         },
     ),
     Exercise(
@@ -45,6 +47,8 @@ $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
             "order": "the frames are passed in the wrong order: first C to B (R_bc), then B to "
             "A (R_ab).",
             "inverse": "that goes from A to C; the exercise goes from C to A: v_a = R_ac v_c.",
+            "rows": "the axes of a frame are the columns of its rotation matrix, not its "
+            "rows: R_bc = [x_bc y_bc z_bc].",
         },
     ),
     Exercise(

@@ -624,3 +624,87 @@ def test_regression_a_huge_float32_answer_is_checked_quickly():
     start = time.perf_counter()
     result = check("chain_vector", np.array([1e30, 3, -2], dtype=np.float32))
     assert time.perf_counter() - start < 1.0 and "component 1 is wrong" in result.message
+
+
+def test_regression_inner_products_written_as_1x1_matrices_were_refused():
+    # x.T * z is how the chapter writes xᵀz: a list of such 1x1 matrices is a right answer
+    result = check("bac_cab", [x.T * z, -(x.T * y)])
+    assert result.ok, result.message
+
+
+def test_regression_a_varying_factor_hint_spoke_of_omega_where_there_is_none():
+    chapter_one = check("lagrange_identity", xx * yy - xy)
+    assert "changes with the symbols" in chapter_one.message
+    assert "ω" not in chapter_one.message.split("Hint:")[0]
+    assert "‖ω‖" in check("hat_fifth", omega.dot(omega) * W).message
+
+
+def test_regression_a_sign_error_in_a_polynomial_in_w_was_called_a_transpose_only():
+    wrong = -sp.cos(theta) * W + sp.sin(theta) * W**2
+    result = check("rodrigues_derivative", wrong)
+    assert not result.ok
+    assert "the W term" in result.message and "Wᵀ = −W" in result.message
+
+
+@pytest.mark.parametrize(
+    ("name", "typed"), [("angle_from_lengths", 1.0472), ("pendulum_speed", 3.14)]
+)
+def test_regression_a_rounded_decimal_got_only_the_value_is_not_right(name, typed):
+    result = check(name, typed)
+    assert not result.ok and "only a few digits" in result.message
+    assert "only a few digits" not in check(name, 0.5).message  # a short exact decimal
+
+
+def test_regression_theta_instead_of_cos_theta_got_a_factor_hint():
+    cos_theta = (sp.cos(alpha) + sp.cos(beta) + sp.cos(alpha) * sp.cos(beta) - 1) / 2
+    assert check("composed_angle", cos_theta).ok
+    assert "asks for cos θ" in check("composed_angle", sp.acos(cos_theta)).message
+
+
+def test_regression_a_wrong_coefficient_of_a_polynomial_in_w_got_all_9_entries_are_wrong():
+    wrong_sign = check("rodrigues_derivative", sp.cos(theta) * W - sp.sin(theta) * W**2)
+    assert "the coefficient of W² has the wrong sign" in wrong_sign.message
+    n = sp.sqrt(omega.dot(omega))
+    no_division = sp.Identity(3) + sp.sin(n * theta) * W + (1 - sp.cos(n * theta)) * W**2
+    message = check("exp_general_axis", no_division).message
+    assert "the coefficients of W and W² are wrong (the rest is right)" in message
+    assert "entries" not in message
+
+
+def test_regression_an_entry_of_a_matrix_symbol_got_an_unexplained_not_allowed():
+    result = check("half_turn", sp.Matrix(2 * u * u.T - sp.Identity(3)))
+    assert result.status == "not allowed"
+    assert "matrix expression itself" in result.message
+
+
+def test_regression_a_series_with_its_order_term_got_an_unexplained_not_allowed():
+    series = sp.sin(alpha).series(alpha, 0, 3)  # alpha + O(alpha**3)
+    result = check("small_angle", [series, alpha * beta / 2, beta])
+    assert result.status == "not allowed" and ".removeO()" in result.message
+    assert check("small_angle", [series.removeO(), alpha * beta / 2, beta]).ok
+
+
+@pytest.mark.parametrize(
+    "container",
+    [sp.Tuple, sp.Array, lambda v: [sp.Tuple(*v)]],
+    ids=["Tuple (nonlinsolve)", "Array", "list of one Tuple"],
+)
+def test_regression_a_right_answer_in_a_sympy_tuple_or_array_was_called_an_equation(container):
+    result = check("ode_shifted", container([sp.log(2), sp.Rational(3, 2)]))
+    assert result.ok, result.message
+
+
+@pytest.mark.filterwarnings("ignore::PendingDeprecationWarning")  # numpy's view of np.matrix
+def test_regression_numpy_matrix_was_called_a_class_of_your_own():
+    result = check("motion_from_points", np.matrix([[0, 0, 1], [0, -1, 0], [1, 0, 0]]))
+    assert result.ok, result.message
+
+
+def test_regression_a_dict_from_solve_got_could_not_read_an_entry():
+    result = check("ode_shifted", [{sp.Symbol("a"): sp.log(2)}, 1.5])
+    assert not result.ok and "dict" in result.message and "sol[" in result.message
+
+
+def test_regression_a_pair_in_the_wrong_order_got_components_1_and_2_are_wrong():
+    result = check("ode_shifted", [sp.Rational(3, 2), sp.log(2)])
+    assert not result.ok and "reverse order" in result.message

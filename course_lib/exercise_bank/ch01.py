@@ -99,6 +99,8 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
             "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
             "two_mirrors": "two reflections one after the other are not a reflection: each "
             "flips the handedness, and the second flips it back.",
+            "point_reflection": "p ↦ −p is not a turn in three dimensions: its matrix −I has "
+            "det (−1)³ = −1, and a half turn after it (det +1) does not change the sign.",
         },
     ),
     Exercise(

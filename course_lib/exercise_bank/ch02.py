@@ -33,6 +33,9 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
             "(Proposition 4); −R and MR have det = −1.",
             "two_reflections": "M R M has two factors of det −1: det(MRM) = (−1)(+1)(−1) = +1, "
             "and it is orthogonal as a product of orthogonal matrices.",
+            "sum": "a sum of rotations is not a rotation in general: try R = S = R_z(π) in "
+            "R + S − I and check XᵀX = I.",
+            "minus": "det(−R) = (−1)³ det R for a 3x3 matrix: −R has det −1.",
         },
     ),
     Exercise(

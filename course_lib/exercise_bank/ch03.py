@@ -45,7 +45,13 @@ A pendulum of length $r = 2$ m swings with the angle $\theta(t) = \frac{\pi}{6}\
         answer=Value(shape=()),
         tip="Differentiate θ(t) (chain rule: the 3 comes out), then evaluate at t = π/6.",
         mistakes={
-            "angle": "that is r θ(t), a length; the speed uses the angular rate θ̇ (equation (117))."
+            "angle": "that is r θ(t), a length; the speed uses the angular rate θ̇ "
+            "(equation (117)).",
+            "no_length": "that is the angular speed |θ̇| (rad/s); the tip moves with the speed "
+            "|r θ̇| (equation (118)), and r = 2 m.",
+            "no_chain": "the chain rule: d/dt cos 3t = −3 sin 3t, so θ̇ has a factor 3.",
+            "signed": "that is the velocity r θ̇ with its sign; a speed is a length, "
+            "‖v‖ = |r ω| (equation (118)), never negative.",
         },
     ),
     Exercise(
@@ -124,6 +130,7 @@ smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
             "a > 0 the point turns counterclockwise.",
             "larger": "that a works, but a smaller positive a does too.",
+            "next_turn": "that a works (a full turn more), but a smaller positive a does too.",
         },
     ),
     Exercise(

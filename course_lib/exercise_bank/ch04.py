@@ -27,7 +27,9 @@ Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
         tip="Form R_ab and R_bc from the axes (as columns) and let the subscripts cancel.",
         mistakes={
             "order": "the subscripts must cancel: R_ac = R_ab R_bc (the two inner b's "
-            "meet), not R_bc R_ab."
+            "meet), not R_bc R_ab.",
+            "rows": "the axes of a frame are the columns of its rotation matrix, not its "
+            "rows: R_ab = [x_ab y_ab z_ab].",
         },
     ),
     Exercise(
@@ -45,6 +47,8 @@ $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
             "order": "the frames are passed in the wrong order: first C to B (R_bc), then B to "
             "A (R_ab).",
             "inverse": "that goes from A to C; the exercise goes from C to A: v_a = R_ac v_c.",
+            "rows": "the axes of a frame are the columns of its rotation matrix, not its "
+            "rows: R_bc = [x_bc y_bc z_bc].",
         },
     ),
     Exercise(
@@ -114,13 +118,14 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
         statement=r"""
 Let $R = R_x(\alpha)\,R_z(\beta)$. Find $\cos\theta$, where $\theta$ is the rotation angle of
 $R$, as an expression in `alpha` and `beta`; then check that $R_z(\beta)R_x(\alpha)$, a
-different rotation, has the same angle.
+different rotation, has the same angle. Give a scalar expression in `alpha` and `beta`.
 """,
         answer=Expr(shape=(), domain=(alpha, beta)),
         tip="tr R = 1 + 2 cos θ; only the diagonal entries of the product are needed.",
         mistakes={
             "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
             "sum": "angles add only for rotations about the same axis.",
+            "angle": "that is the angle θ itself; the exercise asks for cos θ.",
         },
     ),
     Exercise(

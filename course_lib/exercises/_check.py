@@ -6,6 +6,7 @@ import numpy as np
 import sympy as sp
 from sympy.matrices.expressions import MatrixSymbol
 
+from .. import symbolic as S
 from . import _engine as E
 from ._model import Choice, Expr, Value
 from ._reading import Rejected, describe_shape, matrix_degree, read_answer, read_choice
@@ -107,7 +108,49 @@ def _symmetry_hint(A, Ev):
     return None
 
 
-def _generic_hint(spec, A, Ev):
+def _uses_omega(spec):
+    return bool(set(spec.domain) & set(S.omega)) or S.W in set(spec.allowed or ())
+
+
+_W_BASIS = ("I", "W", "W²")
+
+
+def _w_coefficients(M, H):
+    """Coefficients (NPOINTS, 3) of M in the basis I, H, H² at each point, or None when M is
+    not in their span."""
+    basis = np.stack([np.broadcast_to(np.eye(3), H.shape), H, H @ H], -1).reshape(-1, 9, 3)
+    coeffs = np.stack([np.linalg.lstsq(b, m.ravel(), rcond=None)[0] for b, m in zip(basis, M)])
+    if not E.close(np.einsum("kij,kj->ki", basis, coeffs), M.reshape(-1, 9)):
+        return None
+    return coeffs
+
+
+def _w_coefficient_hint(spec, A, Ev, pts):
+    """For a polynomial in W (ω̂): which of the coefficients of I, W, W² is wrong."""
+    if pts is None or spec.matrix_degree is None or S.W not in set(spec.allowed or ()):
+        return None
+    w = np.stack([pts[s] for s in S.omega], -1)
+    H = np.zeros((len(w), 3, 3))
+    H[:, 0, 1], H[:, 0, 2], H[:, 1, 2] = -w[:, 2], w[:, 1], -w[:, 0]
+    H -= np.swapaxes(H, -1, -2)
+    cA, cE = _w_coefficients(A, H), _w_coefficients(Ev, H)
+    if cA is None or cE is None:
+        return None
+    same = lambda a, b: np.allclose(a, b, rtol=1e-6, atol=1e-6)  # noqa: E731 - noise of lstsq
+    bad = [j for j in range(3) if not same(cA[:, j], cE[:, j])]
+    if not bad:
+        return None
+    names = _join([_W_BASIS[j] for j in bad])
+    if all(same(cA[:, j], -cE[:, j]) for j in bad):
+        verb = "have" if len(bad) > 1 else "has"
+        return f"the coefficient of {names} {verb} the wrong sign."
+    noun = "coefficients" if len(bad) > 1 else "coefficient"
+    verb = "are" if len(bad) > 1 else "is"
+    rest = " (the rest is right)" if len(bad) < 3 else ""
+    return f"the {noun} of {names} {verb} wrong{rest}."
+
+
+def _generic_hint(spec, A, Ev, pts=None):
     shape = spec.shape
     zero = np.zeros_like(Ev)
     nonzero = not E.close(Ev, zero)
@@ -118,6 +161,11 @@ def _generic_hint(spec, A, Ev):
         and E.close(A, np.swapaxes(Ev, -1, -2))
         and not E.close(Ev, np.swapaxes(Ev, -1, -2))
     ):
+        if spec.matrix_degree is not None and S.W in set(spec.allowed or ()):
+            return (
+                "your answer is the transpose of the right one; for a polynomial in W that "
+                "means the W term (an odd power) has the wrong sign, since Wᵀ = −W."
+            )
         return "your answer is the transpose of the right one (rows and columns swapped)."
     if nonzero and E.close(A, zero):
         return "your answer is zero, the right one is not."
@@ -132,9 +180,10 @@ def _generic_hint(spec, A, Ev):
         if np.all(norms > E.TOL):
             ck = np.sum(A * Ev, axis=axes) / norms
             if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
+                example = " (for instance the powers of ‖ω‖)" if _uses_omega(spec) else ""
                 return (
                     "your answer is the right one times a factor that changes with the "
-                    "symbols: check the scalar factors (for instance the powers of ‖ω‖)."
+                    f"symbols: check the scalar factors{example}."
                 )
     if len(shape) == 2 and shape[0] == shape[1]:
         hint = _symmetry_hint(A, Ev)
@@ -143,7 +192,10 @@ def _generic_hint(spec, A, Ev):
         D = A - Ev
         s = np.trace(D, axis1=-2, axis2=-1) / shape[0]
         if E.close(D, s[:, None, None] * np.eye(shape[0])):
-            msg = "your answer differs from the right one by a multiple of the identity."
+            msg = (
+                "your answer differs from the right one by a multiple of the identity: "
+                "check its I term."
+            )
             return msg + (" " + _UNIT_HINT if spec.unit_omega else "")
     per_point = [E.close(a[None], e[None]) for a, e in zip(A, Ev)]
     if any(per_point):
@@ -152,6 +204,9 @@ def _generic_hint(spec, A, Ev):
             "over their whole range (a truncated series, or a formula valid only for some "
             "values?)."
         )
+    hint = _w_coefficient_hint(spec, A, Ev, pts)
+    if hint:
+        return hint
     if shape == ():
         return "your expression is not equal to the right one."
     bad = np.zeros(A.shape[1:], dtype=bool)
@@ -205,7 +260,7 @@ def judge_expr(ex, fp, answer):
         hint = _property_hint(ex, M, syms, pts)
         if hint:
             return "wrong", hint
-    return "wrong", _generic_hint(spec, A, Ev)
+    return "wrong", _generic_hint(spec, A, Ev, pts)
 
 
 def _numbers(M):
@@ -234,6 +289,11 @@ def _value_hint(ex, fp, v):
     ok = E.match_cells(name, v, fp["cells"])
     if np.any(v != 0) and E.match_cells(name, -v, fp["cells"]).all():
         return "your answer is the negative of the right one: check the signs."
+    if len(spec.shape) == 1 and E.match_cells(name, v[::-1], fp["cells"]).all():
+        return (
+            "your components are in the reverse order: give them in the order the exercise "
+            "asks for."
+        )
     if len(spec.shape) == 2:
         vt = v.reshape(spec.shape).T.ravel()
         if E.match_cells(name, vt, fp["cells"]).all():
@@ -260,6 +320,23 @@ def _value_hint(ex, fp, v):
                 "of a cross product or the sign of one column)."
             )
     return _positions(~ok.reshape(spec.shape), spec.shape)
+
+
+_ROUNDED = (
+    " Your answer holds decimals with only a few digits: the check needs about 9, so give "
+    "the exact value (sp.sqrt(2), sp.pi / 3, sp.acos(...)) or let Python compute it instead "
+    "of typing a rounded number."
+)
+
+
+def _typed_rounded(M):
+    """Does the answer hold a float typed with 3 to 6 significant digits (1.0472, 3.14)?"""
+    for node in sp.preorder_traversal(M):
+        if isinstance(node, sp.Float):
+            f = float(node)
+            if f != round(f) and f == float(f"{f:.6g}") and f != float(f"{f:.2g}"):
+                return True
+    return False
 
 
 def _single_precision(answer):
@@ -312,7 +389,10 @@ def judge_value(ex, fp, answer):
         return "wrong", _positions(
             ~ok.reshape(ex.answer.shape), ex.answer.shape
         ) + " Also, " + _SINGLE
-    return "wrong", _value_hint(ex, fp, v)
+    hint = _value_hint(ex, fp, v)
+    if _typed_rounded(M) and not any(hint == text for text in ex.mistakes.values()):
+        hint += _ROUNDED
+    return "wrong", hint
 
 
 def judge_choice(ex, fp, answer):

@@ -25,6 +25,7 @@ from sympy.matrices.expressions import (
     Transpose,
     ZeroMatrix,
 )
+from sympy.matrices.expressions.matexpr import MatrixElement
 
 __all__ = ["Rejected", "read_choice", "read_answer", "degree_bound"]
 
@@ -99,6 +100,17 @@ def _not_allowed(node):
         why = "the exercise asks for the answer without an inverse"
     elif isinstance(node, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
         why = "evaluate it first (.doit()) and simplify the result"
+    elif isinstance(node, sp.Order):
+        why = "a series keeps its O(...) term: drop it with .removeO()"
+    elif isinstance(node, MatrixElement):
+        return Rejected(
+            f"not allowed here: {node}, an entry of a matrix symbol or matrix expression "
+            "(from indexing it, or from sp.Matrix(...) of a matrix expression). Give the "
+            "matrix expression itself, with numbers or the exercise's scalar symbols as "
+            "coefficients; an inner product such as uᵀu is a number you can work out "
+            "(for a unit vector, uᵀu = 1).",
+            "not allowed",
+        )
     else:
         why = "give an expression built from +, −, ·, powers and elementary functions"
     return Rejected(f"not allowed here: {name} ({why}).", "not allowed")
@@ -223,6 +235,8 @@ def matrix_degree(e):
 
 def _scalar(v):
     kind = type(v)
+    if kind in _EXPLICIT and v.shape == (1, 1):  # x.T * y: a 1x1 Matrix stands for the number
+        return _scalar(v[0, 0])
     if kind is bool or kind is np.bool_:
         raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
     if kind is int or kind in _NUMPY_INTS:
@@ -235,6 +249,11 @@ def _scalar(v):
         if v.imag != 0:
             raise Rejected("your answer is complex; a real answer is expected.")
         return sp.Float(v.real)
+    if kind is dict:
+        raise Rejected(
+            "your answer holds a dict (from sp.solve(..., dict=True)?): give the values "
+            "themselves, e.g. [sol[a], sol[b]], in the order the exercise asks for."
+        )
     if kind is str:
         raise Rejected(
             "your answer is a string (text), not a string of numbers or "
@@ -266,8 +285,30 @@ def _scalar(v):
     raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an expression.")
 
 
+_ARRAYS = (
+    sp.ImmutableDenseNDimArray,
+    sp.MutableDenseNDimArray,
+    sp.ImmutableSparseNDimArray,
+    sp.MutableSparseNDimArray,
+)
+
+
+def _plain(answer):
+    """sympy's own containers (a Tuple from nonlinsolve, an N-dim Array, numpy's matrix) as
+    the plain list, tuple or array they stand for; anything else unchanged."""
+    kind = type(answer)
+    if kind is sp.Tuple:
+        return tuple(answer)
+    if kind in _ARRAYS:
+        return answer.tolist()
+    if kind is np.matrix:
+        return np.asarray(answer)
+    return answer
+
+
 def _rows(answer):
     """Nested lists / tuples / arrays as a list of rows of sympy scalars."""
+    answer = _plain(answer)
     kind = type(answer)
     if kind is np.ndarray:
         if answer.dtype.kind == "b":
@@ -282,6 +323,7 @@ def _rows(answer):
         return [[_scalar(answer)]], "a scalar"
     rows = []
     for r in answer:
+        r = _plain(r)
         if type(r) is np.ndarray:
             r = r.tolist()
         if type(r) in (list, tuple):
@@ -325,6 +367,7 @@ def read_answer(answer, shape, symbols, numeric=False):
     """
     if answer is None:
         raise Rejected("no answer yet (the answer variable is still None).", "no answer")
+    answer = _plain(answer)
     kind = type(answer)
     if isinstance(answer, MatrixExpr) and kind not in _EXPLICIT:
         if kind not in _MATRIX_TYPES and kind is not sp.MatrixSymbol:

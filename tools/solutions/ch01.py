@@ -62,6 +62,7 @@ MISTAKES = {
         "mirrors": '{"a", "b", "c", "d", "e", "f"}',
         "translation": '{"b", "d"}',
         "two_mirrors": '{"b", "e"}',
+        "point_reflection": '{"b", "c", "d", "e"}',
     },
     "unit_tangent": {"velocity": "velocity"},
     "lagrange_identity": {"plus": "xx * yy + xy**2"},

@@ -41,7 +41,12 @@ answer_two_mirrors = sp.pi * 100 / 180 / 2          # 2ψ = 100°""",
 }
 
 MISTAKES = {
-    "which_in_so3": {"orthogonal": '{"a", "b", "c", "d", "f"}', "two_reflections": '{"a", "c"}'},
+    "which_in_so3": {
+        "orthogonal": '{"a", "b", "c", "d", "f"}',
+        "two_reflections": '{"a", "c"}',
+        "sum": '{"a", "c", "d", "e"}',
+        "minus": '{"a", "b", "c", "d"}',
+    },
     "vb_from_va": {
         "direction": "R_ab @ v_a",
         "left_handed": "np.column_stack([x_ab, y_ab, -np.cross(x_ab, y_ab)]).T @ v_a",

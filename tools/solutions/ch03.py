@@ -52,13 +52,22 @@ MISTAKES = {
         "interval": "[sp.log(4) / 3, 3 * 4 ** sp.Rational(-1, 3)]",
         "at_zero": "[sp.log(2), 3]",
     },
-    "pendulum_speed": {"angle": "2 * angle.subs(tau, sp.pi / 6)"},
+    "pendulum_speed": {
+        "angle": "2 * angle.subs(tau, sp.pi / 6)",
+        "no_length": "sp.Abs(rate).subs(tau, sp.pi / 6)",
+        "no_chain": "sp.Abs(2 * rate / 3).subs(tau, sp.pi / 6)",
+        "signed": "(2 * rate).subs(tau, sp.pi / 6)",
+    },
     "hat_fifth": {"unit": "W"},
     "half_turn": {
         "mirror": "sp.Identity(3) - 2 * u * u.T",
         "inner": "2 * omega.dot(omega) * sp.eye(3) - sp.eye(3)",
     },
-    "planar_ode": {"direction": "[sp.pi / 2, -2]", "larger": "[3 * sp.pi / 2, -2]"},
+    "planar_ode": {
+        "direction": "[sp.pi / 2, -2]",
+        "larger": "[3 * sp.pi / 2, -2]",
+        "next_turn": "[5 * sp.pi / 2, 2]",
+    },
     "exp_general_axis": {"unit": "sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2"},
     "spatial_angular_velocity": {"body": "[sp.cos(t), -sp.sin(t), 1]", "sum": "[1, 0, 1]"},
 }

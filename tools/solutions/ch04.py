@@ -53,12 +53,20 @@ answer_half_turn_axis = (P_row / w1).T               # (6, −2, 3)/7""",
 }
 
 MISTAKES = {
-    "compose_frames": {"order": "R_bc @ R_ab"},
-    "chain_vector": {"order": "R_bc @ (R_ab @ v_c)", "inverse": "(R_ab @ R_bc).T @ v_c"},
+    "compose_frames": {"order": "R_bc @ R_ab", "rows": "R_ab.T @ R_bc.T"},
+    "chain_vector": {
+        "order": "R_bc @ (R_ab @ v_c)",
+        "inverse": "(R_ab @ R_bc).T @ v_c",
+        "rows": "R_ab.T @ (R_bc.T @ v_c)",
+    },
     "angle_from_trace": {"cosine": "(trace - 1) / 2", "no_minus_one": "sp.acos(trace / 2)"},
     "axis_of_rotation": {"unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])"},
     "fixed_vs_body": {"all_body": "Rz @ Ry @ Rx", "all_world": "Rx @ Ry @ Rz"},
-    "composed_angle": {"no_minus_one": "(Rx * Rz).trace() / 2", "sum": "sp.cos(alpha + beta)"},
+    "composed_angle": {
+        "no_minus_one": "(Rx * Rz).trace() / 2",
+        "sum": "sp.cos(alpha + beta)",
+        "angle": "sp.acos(cos_xz)",
+    },
     "small_angle": {
         "first_order": "sp.Matrix([alpha, 0, beta])",
         "sign": "sp.Matrix([alpha, -alpha * beta / 2, beta])",

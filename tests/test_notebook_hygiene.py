@@ -67,7 +67,7 @@ def test_first_cell_is_the_current_setup_cell(chapter):
 
 def test_setup_cell_is_short_and_readable():
     lines = nbtool.setup_source("https://github.com/example/rotations-course").splitlines()
-    assert len(lines) <= 13
+    assert len(lines) <= 16
     assert max(len(line) for line in lines) <= 100
 
 
@@ -239,6 +239,18 @@ def test_setup_cell_imports_from_the_checkout_above_the_notebook(monkeypatch, tm
 def test_setup_cell_installs_from_the_repository_url_elsewhere(monkeypatch, tmp_path):
     shell = _run_setup("https://github.com/example/c", monkeypatch, tmp_path, importable=False)
     assert shell.magics == [("pip", 'install --quiet "git+{COURSE_URL}"')]
+
+
+def test_setup_cell_turns_on_colabs_widget_manager_for_ipympl(monkeypatch, tmp_path):
+    import types
+
+    calls = []
+    colab = types.ModuleType("google.colab")
+    colab.output = types.SimpleNamespace(enable_custom_widget_manager=lambda: calls.append(1))
+    monkeypatch.setitem(sys.modules, "google", types.ModuleType("google"))
+    monkeypatch.setitem(sys.modules, "google.colab", colab)
+    _run_setup(None, monkeypatch, tmp_path, importable=True)
+    assert calls == [1]
 
 
 def test_setup_cell_says_what_to_do_while_the_url_is_unset(monkeypatch, tmp_path):

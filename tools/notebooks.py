@@ -61,7 +61,10 @@ if importlib.util.find_spec("course_lib") is None:
     elif COURSE_URL:
         %pip install --quiet "git+{{COURSE_URL}}"
     else:
-        raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")"""
+        raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")
+if "google.colab" in sys.modules:  # Colab draws the explorers' ipympl figures only with this
+    from google.colab import output
+    output.enable_custom_widget_manager()"""
 
 
 def setup_source(url=None):

@@ -7,10 +7,40 @@ derandomized, so a red CI is always reproducible from the same commit.
 import os
 
 import matplotlib
+import pytest
 from hypothesis import settings
 
 matplotlib.use("Agg")
 
+import matplotlib.pyplot as plt  # noqa: E402
+from mpl_toolkits.mplot3d import proj3d  # noqa: E402
+
 settings.register_profile("ci", derandomize=True, deadline=None)
 settings.register_profile("dev", deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    """Every test closes the figures it opened (too many open figures is a warning: an error)."""
+    before = set(plt.get_fignums())
+    yield
+    for num in set(plt.get_fignums()) - before:
+        plt.close(num)
+
+
+def _screen_box(text, ax, renderer):
+    x0, y0 = text.get_position()
+    xs, ys, _ = proj3d.proj_transform(*text.get_position_3d(), ax.get_proj())
+    text.set_position((xs, ys))
+    try:
+        return text.get_window_extent(renderer)
+    finally:
+        text.set_position((x0, y0))
+
+
+@pytest.fixture
+def screen_box():
+    """Display box of a 3D label where it is drawn (Text3D projects its position only while it
+    draws itself, so its 2D position is moved there for the measurement and put back)."""
+    return _screen_box

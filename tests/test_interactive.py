@@ -542,20 +542,8 @@ def test_explorer_stores_a_small_png_snapshot_and_a_description(make):
     assert Image.open(io.BytesIO(png)).size == (round(width), round(height))
 
 
-def screen_box(text, ax, renderer):
-    """Display box of a 3D label where it is drawn (Text3D projects its position only while it
-    draws itself: the 2D position is moved there for the measurement and put back)."""
-    x0, y0 = text.get_position()
-    xs, ys, _ = proj3d.proj_transform(*text.get_position_3d(), ax.get_proj())
-    text.set_position((xs, ys))
-    try:
-        return text.get_window_extent(renderer)
-    finally:
-        text.set_position((x0, y0))
-
-
 @pytest.mark.parametrize("make, count", [(rotation_explorer, 8), (rodrigues_explorer, 1)])
-def test_explorer_labels_do_not_overlap_at_the_first_view(make, count):
+def test_explorer_labels_do_not_overlap_at_the_first_view(make, count, screen_box):
     # x_A ... z_B, ω and B: eight labels in the rotation explorer (the Rodrigues terms are
     # named in a legend)
     ax = make().ax

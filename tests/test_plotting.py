@@ -45,15 +45,6 @@ seeds = st.integers(0, 2**32 - 1)
 angles = st.floats(-2 * np.pi, 2 * np.pi, allow_nan=False)
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    """Every test closes the figures it opened (too many open figures is a warning: an error)."""
-    before = set(plt.get_fignums())
-    yield
-    for num in set(plt.get_fignums()) - before:
-        plt.close(num)
-
-
 @pytest.fixture(scope="module")
 def ax3():
     """One 3D axes shared by the property tests of a module (a figure per example is slow)."""
@@ -503,20 +494,8 @@ def test_draw_segment_label_in_2d_is_beside_the_segment_and_above_it():
     assert (right.get_ha(), right.get_va()) == ("left", "center")
 
 
-def _screen_box(text, ax, renderer):
-    """Display box of a 3D text where it is drawn (Text3D projects its position only while it
-    draws itself, so its 2D position is moved there for the measurement and put back)."""
-    x0, y0 = text.get_position()
-    xs, ys, _ = proj3d.proj_transform(*text.get_position_3d(), ax.get_proj())
-    text.set_position((xs, ys))
-    try:
-        return text.get_window_extent(renderer)
-    finally:
-        text.set_position((x0, y0))
-
-
 @pytest.mark.parametrize("turned", [False, True])
-def test_draw_segment_label_is_off_the_centre_of_a_box_with_symmetric_marks(turned):
+def test_draw_segment_label_is_off_the_centre_of_a_box_with_symmetric_marks(turned, screen_box):
     # the phone of notebook 02: marks symmetric about the centre, so the midpoint of p1 p2 is
     # the origin of the body frame B, where its arrows start; the label used to sit there
     fig, ax = axes3d("phone", lim=0.8)
@@ -528,10 +507,10 @@ def test_draw_segment_label_is_off_the_centre_of_a_box_with_symmetric_marks(turn
     _render(fig)
     renderer = fig.canvas.get_renderer()
     (label,) = _texts(seg)
-    box = _screen_box(label, ax, renderer)
+    box = screen_box(label, ax, renderer)
     centre = ax.transData.transform(proj3d.proj_transform(*R @ [0, 0, 0.05], ax.get_proj())[:2])
     assert not box.padded(8 * DPI / 100).contains(*centre)  # clear of the frame's origin ...
-    names = {t.get_text(): _screen_box(t, ax, renderer) for t in _texts(phone)}
+    names = {t.get_text(): screen_box(t, ax, renderer) for t in _texts(phone)}
     for name in ("$x_{B}$", "$y_{B}$", "$z_{B}$"):  # ... and of the labels of its axes
         assert not box.overlaps(names[name]), name
     # the midpoint is still available on request, across the segment as well

@@ -23,14 +23,6 @@ from course_lib.tolerance import TOL  # noqa: E402
 FAST = settings(max_examples=20, deadline=None)
 
 
-@pytest.fixture(autouse=True)
-def _close_figures():
-    before = set(plt.get_fignums())
-    yield
-    for num in set(plt.get_fignums()) - before:
-        plt.close(num)
-
-
 def _texts(ax):
     return [t.get_text() for t in ax.texts]
 

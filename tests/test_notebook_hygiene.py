@@ -66,8 +66,9 @@ def test_first_cell_is_the_current_setup_cell(chapter):
 
 
 def test_setup_cell_is_short_and_readable():
+    # 20: one import a line and the blank lines after imports that ruff asks for (`make lint`)
     lines = nbtool.setup_source("https://github.com/example/rotations-course").splitlines()
-    assert len(lines) <= 16
+    assert len(lines) <= 20
     assert max(len(line) for line in lines) <= 100
 
 

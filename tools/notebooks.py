@@ -50,7 +50,10 @@ _FRAME = re.compile(r'"data:image/png;base64,([A-Za-z0-9+/=\\\n]+)"')
 
 SETUP_TEMPLATE = """\
 # Setup, run it first: makes the course library importable (laptop, JupyterHub, Binder, Colab).
-import importlib.util, pathlib, sys
+import importlib.util
+import pathlib
+import sys
+
 # The course repository, from [project.urls] in pyproject.toml (None: not published yet)
 COURSE_URL = {url}
 if importlib.util.find_spec("course_lib") is None:
@@ -64,6 +67,7 @@ if importlib.util.find_spec("course_lib") is None:
         raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")
 if "google.colab" in sys.modules:  # Colab draws the explorers' ipympl figures only with this
     from google.colab import output
+
     output.enable_custom_widget_manager()"""
 
 

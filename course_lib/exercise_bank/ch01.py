@@ -7,8 +7,8 @@ from course_lib.symbolic import t, x, xx, xy, y, yy, z
 
 CHAPTER = 1
 SETUP = (
-    "import numpy as np\nimport sympy as sp\n"
-    "from course_lib.exercises import check, t, x, y, z, xx, yy, xy"
+    "import numpy as np\nimport sympy as sp\n\n"
+    "from course_lib.exercises import check, t, x, xx, xy, y, yy, z"
 )
 
 _HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])  # p(t), as in the statement

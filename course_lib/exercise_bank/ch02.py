@@ -5,8 +5,8 @@ from course_lib.symbolic import A, B, R, X, Y, d
 
 CHAPTER = 2
 SETUP = (
-    "import numpy as np\nimport sympy as sp\n"
-    "from course_lib.exercises import check, hat, A, B, R, X, Y, d, x, y"
+    "import numpy as np\nimport sympy as sp\n\n"
+    "from course_lib.exercises import A, B, R, X, Y, check, d, hat, x, y"
 )
 
 EXERCISES = [

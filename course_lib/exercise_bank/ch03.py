@@ -5,8 +5,8 @@ from course_lib.symbolic import W, omega, t, theta, u
 
 CHAPTER = 3
 SETUP = (
-    "import numpy as np\nimport sympy as sp\n"
-    "from course_lib.exercises import check, hat, omega, theta, W, u, a, t, x_0"
+    "import numpy as np\nimport sympy as sp\n\n"
+    "from course_lib.exercises import W, a, check, hat, omega, t, theta, u, x_0"
 )
 
 _W = tuple(omega)

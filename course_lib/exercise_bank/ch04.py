@@ -5,7 +5,7 @@ from course_lib.symbolic import alpha, beta
 
 CHAPTER = 4
 SETUP = (
-    "import numpy as np\nimport sympy as sp\nfrom course_lib.exercises import check, alpha, beta"
+    "import numpy as np\nimport sympy as sp\n\nfrom course_lib.exercises import alpha, beta, check"
 )
 
 _FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 0, -1)$, $y_{ab} = (0, 1, 0)$,

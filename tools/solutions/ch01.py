@@ -9,30 +9,30 @@ SOLUTIONS = {
     "coords_by_projection": """\
 o, p = np.array([1, 1, 0]), np.array([3, 1, 2])
 directions = [np.array([1, 1, 0]), np.array([-1, 1, 0]), np.array([0, 0, 2])]
-e1, e2, e3 = [v / np.linalg.norm(v) for v in directions]       # unit vectors, eq. (1)
-answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]   # eqs (3)-(5)""",
+e1, e2, e3 = [v / np.linalg.norm(v) for v in directions]  # unit vectors, eq. (1)
+answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]  # eqs (3)-(5)""",
     "angle_from_lengths": """\
 # 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
 x_dot_y = sp.Rational(9 + 16 - 13, 2)
 answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))""",
     "which_are_rigid": """\
 # g(p) = M p + d keeps distances iff M is orthogonal; it keeps cross products iff det M = +1
-half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])            # = diag(-1, -1, 1)
+half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])  # = diag(-1, -1, 1)
 quarter_x = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])
 n = np.array([1, 1, 0]) / np.sqrt(2)
 M = {
-    "a": np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1]]),           # swaps x and y
-    "b": 2 * np.outer(n, n) - np.eye(3),                        # half turn about n
-    "c": half_z @ (-np.eye(3)),                                 # = diag(1, 1, -1)
+    "a": np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1]]),  # swaps x and y
+    "b": 2 * np.outer(n, n) - np.eye(3),  # half turn about n
+    "c": half_z @ (-np.eye(3)),  # = diag(1, 1, -1)
     "d": np.diag([1, -1, 1]) @ np.diag([-1, 1, 1]),
-    "e": quarter_x,                                             # the translation drops out of g_*
+    "e": quarter_x,  # the translation drops out of g_*
     "f": -np.eye(3),
 }
 answer_which_are_rigid = {k for k, Mk in M.items() if np.isclose(np.linalg.det(Mk), 1)}""",
     "unit_tangent": """\
 p = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])
 velocity = p.diff(t)
-speed = sp.sqrt(sp.trigsimp(velocity.dot(velocity)))      # sqrt(4 + 9)
+speed = sp.sqrt(sp.trigsimp(velocity.dot(velocity)))  # sqrt(4 + 9)
 answer_unit_tangent = velocity / speed""",
     "lagrange_identity": """\
 lhs = sp.expand(x.cross(y).dot(x.cross(y)))

@@ -7,23 +7,23 @@ SOLUTIONS = {
 # (c) (RᵀS)ᵀRᵀS = I, det = 1                     (d) det = (−1)(1)(−1) = 1, MᵀM = I
 # (e) not orthogonal in general: R = S = R_z(90°) gives 2R − I
 # (f) det = −1
-Q = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])               # R = S = R_z(90°)
-assert not np.allclose((2 * Q - np.eye(3)).T @ (2 * Q - np.eye(3)), np.eye(3))   # (e) fails
+Q = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])  # R = S = R_z(90°)
+assert not np.allclose((2 * Q - np.eye(3)).T @ (2 * Q - np.eye(3)), np.eye(3))  # (e) fails
 answer_which_in_so3 = {"a", "c", "d"}""",
     "vb_from_va": """\
 x_ab, y_ab = np.array([0, 0, 1]), np.array([1, 0, 0])
-R_ab = np.column_stack([x_ab, y_ab, np.cross(x_ab, y_ab)])   # right-handed: z = x × y
+R_ab = np.column_stack([x_ab, y_ab, np.cross(x_ab, y_ab)])  # right-handed: z = x × y
 v_a = np.array([1, 2, 3])
-answer_vb_from_va = R_ab.T @ v_a                 # v_b = R_ba v_a = R_abᵀ v_a""",
+answer_vb_from_va = R_ab.T @ v_a  # v_b = R_ba v_a = R_abᵀ v_a""",
     "complete_rotation": """\
 a_, b_, c_ = sp.symbols("a b c", real=True)
 Rm = sp.Matrix([[2, -2, 3 * a_], [1, 3 * b_, -2], [3 * c_, 1, 2]]) / 3
-equations = list(Rm.T * Rm - sp.eye(3))             # orthonormal columns (Proposition 3)
+equations = list(Rm.T * Rm - sp.eye(3))  # orthonormal columns (Proposition 3)
 solutions_abc = sp.solve(equations, [a_, b_, c_], dict=True)
 assert len(solutions_abc) == 1 and Rm.subs(solutions_abc[0]).det() == 1
 answer_complete_rotation = [solutions_abc[0][v] for v in (a_, b_, c_)]""",
     "inverse_of_product": """\
-answer_inverse_of_product = B * A.T              # R_ca = R_cb R_ba = R_cb R_abᵀ""",
+answer_inverse_of_product = B * A.T  # R_ca = R_cb R_ba = R_cb R_abᵀ""",
     "rigid_inverse": """\
 # g⁻¹(g(p)) = Rᵀ(Rp + d) + e = p + Rᵀd + e, so e = −Rᵀd
 answer_rigid_inverse = -R.T * d""",
@@ -35,9 +35,9 @@ answer_hat_product = Y * X.T""",
 psi = sp.Symbol("psi", real=True)
 n1, n2 = sp.Matrix([1, 0, 0]), sp.Matrix([sp.cos(psi), sp.sin(psi), 0])
 M1, M2 = sp.eye(3) - 2 * n1 * n1.T, sp.eye(3) - 2 * n2 * n2.T
-turn = (M2 * M1).applyfunc(sp.trigsimp)             # = R_z(2ψ): first column (cos 2ψ, sin 2ψ, 0)
+turn = (M2 * M1).applyfunc(sp.trigsimp)  # = R_z(2ψ): first column (cos 2ψ, sin 2ψ, 0)
 assert (turn - sp.rot_ccw_axis3(2 * psi)).applyfunc(sp.trigsimp) == sp.zeros(3, 3)
-answer_two_mirrors = sp.pi * 100 / 180 / 2          # 2ψ = 100°""",
+answer_two_mirrors = sp.pi * 100 / 180 / 2  # 2ψ = 100°""",
 }
 
 MISTAKES = {

@@ -17,6 +17,8 @@ What lives here
   :math:`\omega`".
 - The truncated matrix exponential (Definition 6), the coefficients of its collapse onto
   :math:`I, \hat\omega, \hat\omega^2` (eqs. 151-158) and Rodrigues' formula (eq. 159).
+- Showing a result as one line of math in a notebook: :func:`show` (and :func:`tex`, its
+  LaTeX text).
 - Small general-case proofs used by the notebooks: the determinant as a triple product (eq. 52),
   the polarization identity (eq. 17), the six constraints of :math:`R^T R = I`
   (eqs. 111-116) with the rank of their Jacobian, and the scalar ODE
@@ -63,6 +65,8 @@ __all__ = [
     "constraint_jacobian",
     "constraint_jacobian_rank",
     "solve_scalar_ode",
+    "tex",
+    "show",
 ]
 
 
@@ -1093,3 +1097,30 @@ def solve_scalar_ode():
     t, a, x0 = sp.symbols("t a x_0", real=True)
     x = sp.Function("x")
     return sp.dsolve(sp.Eq(x(t).diff(t), a * x(t)), x(t), ics={x(0): x0})
+
+
+# ---------------------------------------------------------------------------------------------
+# Showing results
+# ---------------------------------------------------------------------------------------------
+
+
+def tex(*parts):
+    r"""The LaTeX of ``parts``, joined: strings are LaTeX already, the rest goes through sp.latex.
+
+    Examples
+    --------
+    >>> x = sp.Symbol("x")
+    >>> tex("x \\cdot x = ", x * x, ", ", "x + 1 = ", x + 1)
+    'x \\cdot x = x^{2}, x + 1 = x + 1'
+    """
+    return "".join(p if isinstance(p, str) else sp.latex(p) for p in parts)
+
+
+def show(*parts):
+    r"""Display ``parts`` as one line of math in a notebook: ``display(Math(tex(*parts)))``.
+
+    ``show(r"R^TR = ", R.T * R)`` is ``display(Math(r"R^TR = " + sp.latex(R.T * R)))``.
+    """
+    from IPython.display import Math, display
+
+    display(Math(tex(*parts)))

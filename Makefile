@@ -67,8 +67,9 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
 	$(BIN)/python benchmarks/bench_exercises.py
 
-# Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources.
-LINT_PATHS := course_lib tests benchmarks e2e tools
+# Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
+# and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
+LINT_PATHS := course_lib tests benchmarks e2e tools notebooks
 lint: $(STAMP)
 	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
 	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))

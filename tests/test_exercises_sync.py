@@ -6,6 +6,7 @@ needs. Chapter 4's section is built on a stub notebook and its cells are run in 
 """
 
 import copy
+import subprocess
 import sys
 from pathlib import Path
 
@@ -102,3 +103,43 @@ def test_command_line_skips_a_missing_notebook_and_refuses_an_unnumbered_one(tmp
     text = good.read_text()
     assert sync.main([str(good)]) == 0 and good.read_text() == text
     assert "(unchanged)" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("chapter", [1, 2, 3, 4])
+@pytest.mark.parametrize(
+    "command",
+    [["check", "--output-format", "concise"], ["format", "--check"]],
+    ids=["ruff check", "ruff format --check"],
+)
+def test_generated_cells_pass_ruff(chapter, command, tmp_path):
+    """What the tools write (setup cell, exercise section) is ruff-clean and in ruff's format.
+
+    `make lint` covers the notebooks too; this finds a template or a worked solution that would
+    not pass, before any notebook is regenerated. Formatting must also leave the nbgrader
+    markers where they are (the answer cells are unchanged by `ruff format`). F401 is not asked
+    of a section alone: chapter 3's answers are symbolic, yet its set-up cell imports numpy
+    for the student's own work.
+    """
+    from tools import notebooks as nbtool
+
+    nb = sync.sync(nbformat.v4.new_notebook(), chapter)
+    nbtool.put_setup_cell(nb, "https://github.com/example/rotations-course")
+    path = tmp_path / f"ch{chapter:02d}.ipynb"
+    nbformat.write(nb, path)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "ruff",
+            *command,
+            "--no-cache",
+            "--config",
+            str(ROOT / "pyproject.toml"),
+        ]
+        + (["--ignore", "F401"] if command[0] == "check" else [])
+        + [str(path)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert run.returncode == 0, run.stdout + run.stderr

@@ -1,5 +1,10 @@
 """`make test` lints too: ruff check and ruff format --check over the paths of `make lint`.
 
+Those are the Python sources and the notebooks: ruff reads the code cells of .ipynb files
+itself (magics such as ``%config`` are understood), so the notebooks follow the same rules.
+Their generated cells are ruff-clean at the source (tools/notebooks.py, tools/sync_exercises.py;
+tests/test_exercises_sync.py checks them on their own).
+
 The paths come from the Makefile's ``LINT_PATHS`` line, so `make lint` and this test always
 look at the same files; the rules are pyproject.toml's ``[tool.ruff]``. Both commands take
 well under a second. A failure shows ruff's own report: run `make lint` to see it again, and

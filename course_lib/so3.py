@@ -14,7 +14,7 @@ Accuracy. ``exp`` and ``log`` are written to be accurate to a few units in the l
 *every* angle, including the places where textbook implementations fail: angles within 1e-12 of
 0 and of :math:`\pi`, and exactly :math:`\pi` about an axis with mixed signs. ``log`` takes the
 angle from :math:`\operatorname{atan2}(\sin\theta, \cos\theta)`, never from an arccos, and for
-angles above 90° takes the axis from the symmetric part of R (well conditioned there) and only
+angles above 150° takes the axis from the symmetric part of R (well conditioned there) and only
 its sign from the skew part.
 
 Speed. Batches are processed in cache-sized chunks with the nine matrix entries laid out as
@@ -37,6 +37,7 @@ from ._arrays import (
     as_vectors,
     broadcast_batch,
     frobenius_norm,
+    vector_norm,
 )
 from .tolerance import TOL, check_tol, fmt_residual, tol_label
 
@@ -61,6 +62,11 @@ __all__ = [
 _CHUNK = 8192
 # Below this, sin θ is treated as 0 (θ / sin θ = 1); keeps every division finite.
 _TINY = 1e-290
+# log: beyond 150° (sin θ < 1/2) the axis comes from R + Rᵀ; up to it v / sin θ loses at most
+# one bit, beyond it v / sin θ loses more and more digits as θ -> π.
+_FAR = 5 * math.pi / 6
+# Below this a sum of squares underflows (1e-150² < 1e-300): such norms are taken again, scaled.
+_UNDERFLOW = 1e-150
 # The most terms exp_series adds: beyond a few hundred every further term is below rounding
 # for any matrix whose series can be summed accurately in float64.
 _MAX_TERMS = 1000
@@ -504,68 +510,64 @@ def _validate_chunked(R, flat, tol, name):
         _check_chunk(R, np.ascontiguousarray(flat[start : start + _CHUNK].T), start, tol, name)
 
 
+def _far_axes(X, c2, v, theta, want_axis):
+    """Rotation vectors (or unit axes), shape (3, k), of the matrices beyond _FAR, given as
+    their 9 entry rows X with 2 cos θ (c2), 2 sin θ ω (v) and θ.
+
+    The dominant column of N = R + Rᵀ − 2cI = 2(1 − cos θ) ω ωᵀ, signed by v.
+    """
+    k = X.shape[1]
+    N = X.reshape(3, 3, k) + X.reshape(3, 3, k).transpose(1, 0, 2)  # R + Rᵀ
+    d0, d1, d2 = diagonal = N.reshape(9, k)[::4]  # a view of N_00, N_11, N_22
+    diagonal -= c2
+    first = (d0 >= d1) & (d0 >= d2)
+    u = np.where(first, N[:, 0], np.where(d1 >= d2, N[:, 1], N[:, 2]))
+    scale = np.sqrt(np.maximum(np.einsum("im,im->m", u, u), _TINY))
+    np.divide(1.0 if want_axis else theta, scale, out=scale)
+    np.copysign(scale, np.einsum("im,im->m", u, v), out=scale)  # v = +0 at exactly π: u's sign
+    u *= scale
+    return u
+
+
+def _tiny_rows(v, s2, out, where, want_axis):
+    """_log_rows for θ below _TINY: r = v / 2 (θ / sin θ = 1), the axis v / ‖v‖ (e3 for the
+    identity, where every axis is right)."""
+    if want_axis:
+        zero = s2 == 0.0
+        u = v / np.where(zero, 1.0, s2)
+        u[2, zero] = 1.0
+    else:
+        u = 0.5 * v
+    out[:, where] = u
+
+
 def _log_rows(X, v, out, theta, want_axis):
     """Rotation vectors (or unit axes) of the 9 entry rows X into the 3 (strided) rows of out,
     angles into theta; v is a (3, m) scratch buffer.
 
-    Both branches are computed for every element with plain arithmetic (no masks, no
-    temporaries of the batch size) and blended: masked gathers cost more than the math.
+    Up to _FAR every element takes r = θ v / sin θ; the few beyond it are gathered and take
+    the dominant column of R + Rᵀ (_far_axes), whose digits do not vanish with sin θ.
     """
     r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
-    c = r00 + r11
-    c += r22
-    c -= 1.0
-    c *= 0.5
-    # v = sin θ ω, the skew part
+    c2 = r00 + r11
+    c2 += r22
+    c2 -= 1.0  # 2 cos θ
     np.subtract(r21, r12, out=v[0])
     np.subtract(r02, r20, out=v[1])
-    np.subtract(r10, r01, out=v[2])
-    v *= 0.5
-    s = np.sqrt(np.einsum("im,im->m", v, v))
-    np.arctan2(s, c, out=theta)
-    # Up to 90°: r = θ v / sin θ (θ / sin θ -> 1 as θ -> 0).
-    near = (1.0 if want_axis else theta) / np.maximum(s, _TINY)
-    tiny = s < _TINY
-    if tiny.any():
-        near[tiny] = 0.0 if want_axis else 1.0
-    # Beyond 90°: the dominant column of N = R + Rᵀ − 2cI = 2(1 − cos θ) ω ωᵀ, signed by v.
-    d0, d1, d2 = r00 - c, r11 - c, r22 - c
-    n01, n02, n12 = r01 + r10, r02 + r20, r12 + r21
-    w0 = (d0 >= d1) & (d0 >= d2)
-    w1 = (d1 >= d2) & ~w0
-    w2 = ~(w0 | w1)
-    d0 += d0
-    d1 += d1
-    d2 += d2
-    ux = d0 * w0
-    ux += n01 * w1
-    ux += n02 * w2
-    uy = n01 * w0
-    uy += d1 * w1
-    uy += n12 * w2
-    uz = n02 * w0
-    uz += n12 * w1
-    uz += d2 * w2
-    norm2 = ux * ux
-    norm2 += uy * uy
-    norm2 += uz * uz
-    dot = ux * v[0]
-    dot += uy * v[1]
-    dot += uz * v[2]
-    far_scale = (1.0 if want_axis else theta) / np.sqrt(np.maximum(norm2, _TINY))
-    np.copysign(far_scale, dot, out=far_scale)  # dot = +0 at exactly π keeps u's own sign
-    far = c < 0.0
-    far_scale *= far
-    near *= ~far
-    v *= near
-    ux *= far_scale
-    uy *= far_scale
-    uz *= far_scale
-    np.add(v[0], ux, out=out[0])
-    np.add(v[1], uy, out=out[1])
-    np.add(v[2], uz, out=out[2])
-    if want_axis and tiny.any():
-        out[2][tiny & ~far] = 1.0  # the identity: any axis is right, return e3
+    np.subtract(r10, r01, out=v[2])  # v = 2 sin θ ω, the skew part of R twice
+    s2 = np.sqrt(np.einsum("im,im->m", v, v))  # 2 sin θ
+    small = s2 < _UNDERFLOW
+    if small.any():  # θ below 1e-150: the squares underflowed
+        s2[small] = vector_norm(v[:, small].T)
+    np.arctan2(s2, c2, out=theta)
+    np.multiply(v, np.divide(1.0 if want_axis else theta, np.maximum(s2, _TINY)), out=out)
+    tiny = s2 < _TINY
+    if tiny.any():  # θ below 1e-290, where 1 / sin θ overflows
+        _tiny_rows(v[:, tiny], s2[tiny], out, tiny, want_axis)
+    far = np.flatnonzero(theta > _FAR)
+    if far.size:
+        X, c2, v = np.take(X, far, axis=1), c2[far], np.take(v, far, axis=1)
+        out[:, far] = _far_axes(X, c2, v, theta[far], want_axis)
 
 
 def _log_one(X, tol, want_axis):
@@ -579,13 +581,17 @@ def _log_one(X, tol, want_axis):
     c = 0.5 * (r00 + r11 + r22 - 1.0)
     v0, v1, v2 = 0.5 * (r21 - r12), 0.5 * (r02 - r20), 0.5 * (r10 - r01)
     s = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
+    if s < _UNDERFLOW:  # θ below 1e-150: the squares underflowed
+        s = float(vector_norm(np.array([v0, v1, v2])))  # as the batch path does it
     theta = math.atan2(s, c)
-    if c >= 0.0:  # up to 90°: r = θ v / sin θ
-        if s < _TINY:
-            return (0.0, 0.0, 1.0) if want_axis else (0.0, 0.0, 0.0), theta
+    if theta <= _FAR:  # up to 150°: r = θ v / sin θ
+        if s < _TINY:  # 1 / sin θ overflows: θ / sin θ = 1; the identity's axis is e3
+            if want_axis:
+                return ((v0 / s, v1 / s, v2 / s) if s else (0.0, 0.0, 1.0)), theta
+            return (v0, v1, v2), theta
         k = (1.0 if want_axis else theta) / s
         return (k * v0, k * v1, k * v2), theta
-    # beyond 90°: the dominant column of N = R + Rᵀ − 2cI, signed by v
+    # beyond 150°: the dominant column of N = R + Rᵀ − 2cI, signed by v
     d0, d1, d2 = r00 - c, r11 - c, r22 - c
     n01, n02, n12 = r01 + r10, r02 + r20, r12 + r21
     if d0 >= d1 and d0 >= d2:
@@ -625,8 +631,8 @@ def log(R, tol=TOL):
 
     The angle :math:`\theta \in [0, \pi]` is
     :math:`\operatorname{atan2}(\|v\|, \tfrac12(\operatorname{tr}R - 1))` with
-    :math:`\hat v = \tfrac12 (R - R^T) = \sin\theta\,\hat\omega`. Up to 90° the axis is
-    :math:`v / \sin\theta`; beyond, it is the dominant column of
+    :math:`\hat v = \tfrac12 (R - R^T) = \sin\theta\,\hat\omega`. Up to 150° the axis is
+    :math:`v / \sin\theta`; beyond, where that quotient loses digits, it is the dominant column of
     :math:`\tfrac12 (R + R^T) - \cos\theta\, I = (1 - \cos\theta)\,\omega\omega^T`, with the
     sign that makes :math:`\omega \cdot v \ge 0`. At :math:`\pi` both signs are correct;
     when the skew part vanishes exactly, the one returned has a positive dominant component.

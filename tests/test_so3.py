@@ -188,6 +188,44 @@ def test_log_of_identity_is_zero_and_axis_angle_returns_e3():
     assert np.array_equal(axis, [0, 0, 1]) and angle == 0
 
 
+@pytest.mark.parametrize("t", [1e-100, 1e-155, 1e-200, 1e-300, 5e-320])
+def test_axis_angle_of_a_1e200_rotation_is_not_the_identity(t):
+    # The squared norm of the skew part underflowed below 1e-154: axis_angle returned e3 and
+    # the angle 0 for a rotation by 1.4e-200 about (1, 0, -1)/√2.
+    R = so3.exp([t, 0.0, -t])
+    for batch in (R, R[None]):
+        axis, angle = so3.axis_angle(batch)
+        assert np.allclose(axis, [2**-0.5, 0.0, -(2**-0.5)], atol=1e-4 if t < 1e-307 else 1e-15)
+        assert abs(angle - np.sqrt(2) * t) <= (1e-4 if t < 1e-307 else 4 * EPS) * np.sqrt(2) * t
+        assert np.array_equal(so3.log(batch), np.reshape([t, 0.0, -t], np.shape(batch)[:-1]))
+
+
+def test_log_single_call_and_batch_agree_at_every_branch():
+    # Two code paths (9 Python floats, chunked rows): each branch (identity, tiny, v / sin θ,
+    # the switch at 150°, R + Rᵀ, exactly π) must agree in both, to the last bits (math.atan2
+    # and numpy's vectorised arctan2 can differ by one unit in the last place).
+    switch = 5 * np.pi / 6
+    thetas = [0.0, 1e-300, 1e-200, 1e-9, 1.0, np.nextafter(switch, 0), switch]
+    thetas += [np.nextafter(switch, 4), 3.0, np.pi - 1e-9, np.pi]
+    axes = sample_axes(40)
+    for theta in thetas:
+        R = so3.exp(axes, theta)
+        r, (axis, angle) = so3.log(R), so3.axis_angle(R)
+        for i in range(len(R)):
+            one_axis, one_angle = so3.axis_angle(R[i])
+            assert np.abs(so3.log(R[i]) - r[i]).max() <= 4 * EPS * angle[i], (theta, i)
+            assert np.abs(one_axis - axis[i]).max() <= 4 * EPS, (theta, i)
+            assert abs(one_angle - angle[i]) <= 4 * EPS * angle[i], (theta, i)
+
+
+@pytest.mark.parametrize("theta", [2.5, 2.6, 2.617, 2.618, 2.62, 2.7])
+def test_log_keeps_full_accuracy_either_side_of_the_150_degree_switch(theta):
+    axes = sample_axes()
+    r = so3.log(so3.exp(axes, theta))
+    rel = np.linalg.norm(r - axes * theta, axis=-1) / theta
+    assert rel.max() <= 6 * EPS
+
+
 def test_axis_angle_returns_unit_axes_and_angles():
     r = sample_axes() * np.random.default_rng(3).uniform(1e-9, np.pi, 506)[:, None]
     axis, angle = so3.axis_angle(so3.exp(r))

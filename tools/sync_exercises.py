@@ -42,8 +42,9 @@ your answer in the code cell under the statement and assign it to the variable n
 the cell after it checks the answer: it shows ✓ when the answer is right, and otherwise stops
 with an error whose message is a hint (it never shows the answer). Where an exercise asks for a
 form (for example a matrix expression in `W`, which stands for $\\hat\\omega$), a right value in
-another form is not accepted yet. Numbers are compared to about nine digits: give exact values
-(`sp.sqrt(2)`, `sp.pi / 3`) or let Python compute them, rather than typing rounded decimals.
+another form is marked wrong, with a hint that says which form is asked for. Numbers are
+compared to about nine digits: give exact values (`sp.sqrt(2)`, `sp.pi / 3`) or let Python
+compute them, rather than typing rounded decimals.
 The symbols come from `course_lib.exercises`."""
 
 

@@ -88,8 +88,10 @@ $(a, b, c)$, and check $\det R = +1$.
         statement=r"""
 Let `A` stand for $R_{ab}$ and `B` for $R_{cb}$ (two rotation matrices, `MatrixSymbol`s; mind
 the order of the subscripts of `B`). Write $R_{ca}$ in terms of `A` and `B`, **without an
-inverse** (use Proposition 5 and the composition $R_{ca} = R_{cb}R_{ba}$). Give a matrix
-expression in `A`, `B` (products and `.T`).
+inverse**. Two facts do it: by (64) read for each pair of frames, $v_c = R_{cb}v_b$ and
+$v_b = R_{ba}v_a$, so $R_{ca} = R_{cb}R_{ba}$; and $v_a = R_{ab}v_b$ turned around gives
+$R_{ba} = R_{ab}^{-1}$, an inverse that Proposition 5 lets you write without inverting. Give a
+matrix expression in `A`, `B` (products and `.T`).
 """,
         answer=Expr(shape=(3, 3), allowed=(A, B), matrix_degree=2),
         tip="For a rotation R⁻¹ = Rᵀ, so R_ba = R_abᵀ; the inner subscripts of a product "

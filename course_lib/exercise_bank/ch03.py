@@ -162,8 +162,10 @@ degree at most 2 in `W` (standing for $\hat\omega$), e.g.
         title="The angular velocity of a composed motion",
         statement=r"""
 A body turns with $R(t) = R_x(t)\,R_z(t)$ (unit rates about the $x$ axis and about $z$).
-Find its angular velocity $\omega(t)$ with $\dot R R^T = \hat\omega$ (compare equations
-(120)–(125)). Give a 3-vector in `t`.
+Its angular velocity $\omega(t)$ is defined by $\dot R R^T = \hat\omega$: a point fixed in the
+body, $q(t) = R(t)q_0$, moves with $\dot q = \dot R R^T q$, which is (122) with this
+$\hat\omega$. Here $\omega$ changes with $t$, so $R(t)$ is not $e^{\hat\omega t}$. Find
+$\omega(t)$; give a 3-vector in `t`.
 """,
         answer=Expr(shape=(3,), domain=(t,)),
         tip="Ṙ = Ṙ_x R_z + R_x Ṙ_z; then R_x ẑ R_xᵀ is the hat of R_x e₃ (Proposition 6).",

@@ -48,6 +48,7 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.lines import Line2D
 from matplotlib.patches import FancyArrowPatch, Polygon
 from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
@@ -1714,8 +1715,10 @@ def plot_rodrigues_circle(
     a point of the circle of radius :math:`\|q_\perp\|` about the axis, centred at
     :math:`q_\parallel`. The figure draws the axis, :math:`q`, :math:`q_\parallel`, the circle
     (dotted), :math:`q_\perp` and :math:`\omega\times q` from the centre, the two terms
-    :math:`\cos\theta\,q_\perp` and :math:`\sin\theta\,\omega\times q` tip to tail (dashed) and
-    the rotated point.
+    :math:`\cos\theta\,q_\perp` and :math:`\sin\theta\,\omega\times q` tip to tail (dashed, named
+    in a legend) and the rotated point. The labels of the arrows that end on the circle sit off
+    the circle and the arc: :math:`q_\perp` and :math:`\omega\times q` at their middles, the
+    rotated point outside the circle.
 
     Parameters
     ----------
@@ -1771,15 +1774,33 @@ def plot_rodrigues_circle(
     draw_vector(ax, q, label="$q$")
     draw_point(ax, q_par)
     right, up = _screen_basis(ax, 3)  # label q_par below left, clear of the arrows above it
-    _text(ax, q_par - 0.5 * _offset(ax) * (right + up), r"$q_\parallel$", ha="right", va="top")
+    pad = _offset(ax)
+    _text(ax, q_par - 0.5 * pad * (right + up), r"$q_\parallel$", ha="right", va="top")
+    # The other labels sit in the plane of the circle, on the side of their arrow that the other
+    # arrows leave free (u along q_perp, v along w x q: the turn goes from u towards v). q_perp
+    # and w x q end on the circle, where q and the arc are: they are labelled at their middles,
+    # the rotated point just outside the circle. The two dashed terms are named in a legend.
+    u, v = _unit(q_perp), _unit(w_x_q)
+    sv = 1.0 if np.sin(th) >= 0 else -1.0
     draw_vector(ax, q_perp, origin=q_par, color="tab:blue")
-    n, ha, va = _beside(ax, 3, q_perp)  # q_perp ends where q ends: label it at its middle
-    _text(
-        ax, q_par + q_perp / 2 + 0.6 * _offset(ax) * n, r"$q_\perp$", color="tab:blue", ha=ha, va=va
-    )
-    draw_vector(ax, w_x_q, origin=q_par, label=r"$\omega\times q$", color="tab:green")
+    _text(ax, q_par + q_perp / 2 - sv * pad * v, r"$q_\perp$", color="tab:blue")
+    draw_vector(ax, w_x_q, origin=q_par, color="tab:green")
+    _text(ax, q_par + w_x_q / 2 + 2.2 * pad * u, r"$\omega\times q$", color="tab:green")
     cos_part = np.cos(th) * q_perp
     draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")
     draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green", style="dashed")
-    draw_vector(ax, Rq, color="tab:red", label=r"$e^{\hat\omega\theta}q$")
+    draw_vector(ax, Rq, color="tab:red")
+    out = 2.0 * _unit(Rq - q_par) + up  # outward from the circle, and up on the screen
+    _text(ax, Rq + pad * out, r"$e^{\hat\omega\theta}q$", color="tab:red", va="bottom")
+    dashed = [
+        Line2D([], [], color=c, linestyle="--", linewidth=1.8) for c in ("tab:blue", "tab:green")
+    ]
+    ax.legend(
+        dashed,
+        [r"$\cos\theta\,q_\perp$", r"$\sin\theta\,\omega\times q$"],
+        loc="upper left",
+        fontsize=FONT_SIZE - 1,
+        frameon=False,
+        handlelength=2.5,
+    )
     return fig, ax, {"q_par": q_par, "q_perp": q_perp, "w_x_q": w_x_q, "Rq": Rq}

@@ -202,6 +202,22 @@ def test_rodrigues_circle_labels_q_perp_apart_from_q():
     assert np.linalg.norm(where[r"$q_\parallel$"] - parts["q_par"]) > 0.05
 
 
+def test_rodrigues_circle_names_the_dashed_terms_and_keeps_labels_apart(screen_box):
+    # regression: e^{ω̂θ}q and ω×q were written on the arc and on each other's arrows, and the
+    # dashed term cos θ q⊥ that the notebook's caption names carried no name
+    fig, ax, parts = plot_rodrigues_circle([0, 0, 1], [0.9, 0, 0.5], 2 * np.pi / 3)
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend == [r"$\cos\theta\,q_\perp$", r"$\sin\theta\,\omega\times q$"]
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    boxes = {t.get_text(): screen_box(t, ax, renderer) for t in ax.texts}
+    assert len(boxes) == 7  # ω, θ, q, q∥, q⊥, ω×q, e^{ω̂θ}q
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            assert not boxes[a].overlaps(boxes[b]), f"labels {a!r} and {b!r} overlap"
+
+
 @pytest.mark.parametrize(
     "w, q",
     [

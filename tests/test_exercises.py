@@ -269,6 +269,7 @@ def test_known_mistake_fails_with_its_own_hint(name, mid, code):
         ("compose_frames", np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T, "transpose"),
         ("angle_from_lengths", 60, "degrees"),
         ("angle_from_lengths", np.pi / 3 + 2 * np.pi, "full turn"),
+        ("angle_from_trace", 2 * sp.pi - sp.acos(-sp.Rational(1, 4)), "2π minus the right one"),
         ("vb_from_va", [3, 1, 0], "component 3 is wrong"),
         (
             "unit_tangent",
@@ -632,11 +633,42 @@ def test_regression_inner_products_written_as_1x1_matrices_were_refused():
     assert result.ok, result.message
 
 
-def test_regression_a_varying_factor_hint_spoke_of_omega_where_there_is_none():
-    chapter_one = check("lagrange_identity", xx * yy - xy)
-    assert "changes with the symbols" in chapter_one.message
-    assert "ω" not in chapter_one.message.split("Hint:")[0]
+def test_regression_every_wrong_scalar_was_told_to_check_its_scalar_factors():
+    # A nonzero scalar is at every point a multiple of the right one, so "the right one times
+    # a factor that changes with the symbols" fired for any wrong scalar: a missing square,
+    # an extra term. A vector or matrix still gets it, with ‖ω‖ where ω is about.
+    for wrong in (xx * yy - xy, xx * yy - xy**2 + 1, xx + yy - 2 * xy):
+        message = check("lagrange_identity", wrong).message
+        assert "changes with the symbols" not in message and "not equal" in message, message
+        assert "ω" not in message.split("Hint:")[0]
     assert "‖ω‖" in check("hat_fifth", omega.dot(omega) * W).message
+
+
+def test_regression_a_huge_number_was_called_too_large_for_double_precision_or_crashed():
+    # 1e300 was "too large for double precision" (it is not); exp(700) gave "could not check
+    # your answer (OverflowError)" from the digest of a number that large.
+    for huge in (1e300, sp.exp(700)):
+        message = check("angle_from_lengths", huge).message
+        assert "1e300 or more, larger than any answer here" in message, message
+        assert "OverflowError" not in message and "double precision" not in message
+
+
+def test_regression_fractions_decimals_mpmath_and_numpy_scalars_were_refused():
+    # Fraction was called "a class of your own", np.uint64 and np.longdouble "could not read".
+    from decimal import Decimal
+    from fractions import Fraction
+
+    import mpmath
+
+    third = [Fraction(-1, 3), Fraction(2, 3), Fraction(2, 3)]
+    assert check("complete_rotation", third).ok
+    assert check("complete_rotation", [Decimal(n) / 3 for n in (-1, 2, 2)]).ok
+    assert check("complete_rotation", [mpmath.mpf(n) / 3 for n in (-1, 2, 2)]).ok
+    assert check("angle_from_lengths", mpmath.pi / 3).ok
+    assert check("angle_from_lengths", np.longdouble(np.pi) / 3).ok
+    assert check("vb_from_va", [np.uint64(3), np.uint64(1), np.uint64(2)]).ok
+    assert "nan or infinity" in check("angle_from_lengths", Decimal("NaN")).message
+    assert "complex" in check("angle_from_lengths", mpmath.mpc(1, 1)).message
 
 
 def test_regression_a_sign_error_in_a_polynomial_in_w_was_called_a_transpose_only():
@@ -647,12 +679,21 @@ def test_regression_a_sign_error_in_a_polynomial_in_w_was_called_a_transpose_onl
 
 
 @pytest.mark.parametrize(
-    ("name", "typed"), [("angle_from_lengths", 1.0472), ("pendulum_speed", 3.14)]
+    ("name", "typed"),
+    [
+        ("angle_from_lengths", 1.0472),
+        ("pendulum_speed", 3.14),
+        # 8-9 digits were not recognised as typed, and an expression never heard of rounding
+        ("angle_from_lengths", 1.04719755),
+        ("two_mirrors", 0.87266463),
+        ("complete_rotation", [-0.33333333, 0.66666667, 0.66666667]),
+        ("unit_tangent", sp.Matrix([-2 * sp.sin(2 * t), 2 * sp.cos(2 * t), 3]) * 0.27735),
+    ],
 )
 def test_regression_a_rounded_decimal_got_only_the_value_is_not_right(name, typed):
     result = check(name, typed)
-    assert not result.ok and "only a few digits" in result.message
-    assert "only a few digits" not in check(name, 0.5).message  # a short exact decimal
+    assert not result.ok and "typed decimals" in result.message, result.message
+    assert "typed decimals" not in check(name, 0.5).message  # a short exact decimal
 
 
 def test_regression_theta_instead_of_cos_theta_got_a_factor_hint():

@@ -45,8 +45,9 @@ A pendulum of length $r = 2$ m swings with the angle $\theta(t) = \frac{\pi}{6}\
         answer=Value(shape=()),
         tip="Differentiate θ(t) (chain rule: the 3 comes out), then evaluate at t = π/6.",
         mistakes={
-            "angle": "that is r θ(t), a length; the speed uses the angular rate θ̇ "
-            "(equation (117)).",
+            "angle": "0 is r θ(t) at t = π/6 (the pendulum passes the bottom, θ = 0): a "
+            "length, not a speed, and the speed is largest there; the speed uses the angular "
+            "rate θ̇ (equation (117)).",
             "no_length": "that is the angular speed |θ̇| (rad/s); the tip moves with the speed "
             "|r θ̇| (equation (118)), and r = 2 m.",
             "no_chain": "the chain rule: d/dt cos 3t = −3 sin 3t, so θ̇ has a factor 3.",

@@ -9,7 +9,15 @@ from sympy.matrices.expressions import MatrixSymbol
 from .. import symbolic as S
 from . import _engine as E
 from ._model import Choice, Expr, Value
-from ._reading import Rejected, describe_shape, matrix_degree, read_answer, read_choice
+from ._reading import (
+    MAX_MAGNITUDE,
+    TOO_LARGE,
+    Rejected,
+    describe_shape,
+    matrix_degree,
+    read_answer,
+    read_choice,
+)
 
 _UNIT_HINT = (
     "ω is a unit vector here: use ω₁² + ω₂² + ω₃² = 1 (a term with ‖ω‖² does not "
@@ -177,7 +185,7 @@ def _generic_hint(spec, A, Ev, pts=None):
             )
         axes = tuple(range(1, A.ndim))
         norms = np.sum(Ev * Ev, axis=axes)
-        if np.all(norms > E.TOL):
+        if shape != () and np.all(norms > E.TOL):  # a scalar is always a pointwise multiple
             ck = np.sum(A * Ev, axis=axes) / norms
             if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
                 example = " (for instance the powers of ‖ω‖)" if _uses_omega(spec) else ""
@@ -256,11 +264,9 @@ def judge_expr(ex, fp, answer):
     for mid, vals in fp["mistakes"].items():
         if E.close(A, _stored(vals, spec.shape)):
             return "wrong", ex.mistakes[mid]
-    if form == "explicit":
-        hint = _property_hint(ex, M, syms, pts)
-        if hint:
-            return "wrong", hint
-    return "wrong", _generic_hint(spec, A, Ev, pts)
+    hint = _property_hint(ex, M, syms, pts) if form == "explicit" else None
+    hint = hint or _generic_hint(spec, A, Ev, pts)
+    return "wrong", hint + (_ROUNDED if _typed_rounded(M) else "")
 
 
 def _numbers(M):
@@ -276,6 +282,8 @@ def _numbers(M):
         raise Rejected(
             "your answer contains nan or infinity (or a number too large for double precision)."
         )
+    if np.max(np.abs(vals), initial=0.0) >= MAX_MAGNITUDE:
+        raise Rejected(f"your answer evaluates to {TOO_LARGE}.")
     if np.max(np.abs(vals.imag)) > E.TOL:
         raise Rejected("your answer is complex; a real answer is expected.")
     return vals.real
@@ -307,6 +315,11 @@ def _value_hint(ex, fp, v):
                     "your angle differs from the right one by a full turn (2π): give it in "
                     "the range the exercise asks for."
                 )
+        if E.match_cells(name, 2 * np.pi - v, fp["cells"]).all():
+            return (
+                "your angle is 2π minus the right one: the two have the same cosine; give the "
+                "one in the range the exercise asks for."
+            )
     if spec.rotation:
         R = v.reshape(3, 3)
         if np.linalg.norm(R.T @ R - np.eye(3)) > 1e-6:
@@ -323,18 +336,19 @@ def _value_hint(ex, fp, v):
 
 
 _ROUNDED = (
-    " Your answer holds decimals with only a few digits: the check needs about 9, so give "
-    "the exact value (sp.sqrt(2), sp.pi / 3, sp.acos(...)) or let Python compute it instead "
-    "of typing a rounded number."
+    " Your answer holds typed decimals: the check compares about 9 digits, and a rounded "
+    "decimal is off in the digits it leaves out, so give the exact value (sp.sqrt(2), "
+    "sp.pi / 3, sp.acos(...)) or let Python compute it instead of typing a rounded number."
 )
 
 
 def _typed_rounded(M):
-    """Does the answer hold a float typed with 3 to 6 significant digits (1.0472, 3.14)?"""
+    """Does the answer hold a float typed with 3 to 10 significant digits (1.0472, 3.14,
+    1.04719755)? A float that Python computed has 15-17; 0.5 or 2.0 are not rounded."""
     for node in sp.preorder_traversal(M):
         if isinstance(node, sp.Float):
             f = float(node)
-            if f != round(f) and f == float(f"{f:.6g}") and f != float(f"{f:.2g}"):
+            if f != round(f) and f == float(f"{f:.10g}") and f != float(f"{f:.2g}"):
                 return True
     return False
 

@@ -12,6 +12,10 @@ well under a second: nothing is expanded or simplified before they hold.
 
 from __future__ import annotations
 
+from decimal import Decimal
+from fractions import Fraction
+
+import mpmath
 import numpy as np
 import sympy as sp
 from sympy.core.function import AppliedUndef
@@ -33,6 +37,9 @@ MAX_NODES = 800
 MAX_DEGREE = 24
 MAX_MATRIX_DEGREE = 6
 MAX_INTEGER = 10**30
+# Numbers at least this large are refused: no answer is near it, and digests of them overflow.
+MAX_MAGNITUDE = 1e300
+TOO_LARGE = "a number of 1e300 or more, larger than any answer here"
 
 _FUNCTIONS = (
     sp.sin,
@@ -66,8 +73,11 @@ _BAD_NUMBERS = {
 }
 _MATRIX_TYPES = {MatAdd, MatMul, MatPow, Transpose, Identity, ZeroMatrix, MatrixSymbol}
 _EXPLICIT = (sp.ImmutableDenseMatrix, sp.MutableDenseMatrix)
-_NUMPY_INTS = (np.int64, np.int32, np.int16, np.int8)
-_NUMPY_FLOATS = (np.float64, np.float32)
+
+
+# Numbers of the standard library and of mpmath (sympy's own arithmetic), read as numbers.
+_FLOATS = (float, Decimal, mpmath.mpf, type(mpmath.pi))  # mpmath.pi: a class of its own
+_COMPLEX = (complex, mpmath.mpc)
 
 
 class Rejected(Exception):
@@ -129,8 +139,8 @@ def _check_node(node, symbols, numeric):
         elif kind is sp.Integer or kind is sp.Rational:
             if max(abs(node.p), node.q) > MAX_INTEGER:
                 raise _too_complex(f"a number with more than {len(str(MAX_INTEGER))} digits")
-        elif kind is sp.Float and not abs(float(node)) < 1e300:
-            raise _too_complex("a number too large for double precision")
+        elif kind is sp.Float and not abs(float(node)) < MAX_MAGNITUDE:
+            raise _too_complex(TOO_LARGE)
         return
     if numeric and kind is sp.Abs:
         return
@@ -239,16 +249,19 @@ def _scalar(v):
         return _scalar(v[0, 0])
     if kind is bool or kind is np.bool_:
         raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
-    if kind is int or kind in _NUMPY_INTS:
+    numpy = kind.__module__ == "numpy"  # numpy's own scalar types, not a subclass of them
+    if kind is int or numpy and isinstance(v, np.integer):
         return sp.Integer(int(v))
-    if kind is float or kind in _NUMPY_FLOATS:
-        if not np.isfinite(v):
+    if kind is Fraction:
+        return sp.Rational(v.numerator, v.denominator)
+    if kind in _FLOATS or numpy and isinstance(v, np.floating):
+        if not (v.is_finite() if kind is Decimal else np.isfinite(float(v))):
             raise Rejected("your answer contains nan or infinity.")
-        return sp.Float(float(v))
-    if kind is complex or kind is np.complex128:
+        return sp.Rational(str(v)) if kind is Decimal else sp.Float(float(v))
+    if kind in _COMPLEX or numpy and isinstance(v, np.complexfloating):
         if v.imag != 0:
             raise Rejected("your answer is complex; a real answer is expected.")
-        return sp.Float(v.real)
+        return _scalar(float(v.real))
     if kind is dict:
         raise Rejected(
             "your answer holds a dict (from sp.solve(..., dict=True)?): give the values "

@@ -653,6 +653,14 @@ def test_regression_a_huge_number_was_called_too_large_for_double_precision_or_c
         assert "OverflowError" not in message and "double precision" not in message
 
 
+def test_regression_np_eye_in_a_matrix_expression_was_blamed_on_indexing():
+    # u @ u.T - np.eye(3) is a numpy array of entries u[i, 0]·u[j, 0] − δ: the message spoke of
+    # indexing and sp.Matrix(...), not of the np.eye that did it.
+    result = check("half_turn", 2 * u @ u.T - np.eye(3))
+    assert result.status == "not allowed" and "np.eye" in result.message, str(result)
+    assert "indexing" not in result.message
+
+
 def test_regression_fractions_decimals_mpmath_and_numpy_scalars_were_refused():
     # Fraction was called "a class of your own", np.uint64 and np.longdouble "could not read".
     from decimal import Decimal

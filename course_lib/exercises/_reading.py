@@ -373,6 +373,19 @@ def _fit_shape(M, shape, got):
     raise Rejected(f"wrong shape: expected {describe_shape(shape)}, got {got}.")
 
 
+def _refuse_numpy_of_matrix_expressions(array):
+    """A matrix expression mixed with a numpy array (``u @ u.T - np.eye(3)``) becomes a numpy
+    array of its entries: say so, instead of blaming the entries."""
+    for entry in array.flat:
+        if isinstance(entry, sp.Basic) and entry.has(MatrixElement):
+            raise Rejected(
+                "your answer mixes a matrix symbol with a numpy array (np.eye, np.array ...), "
+                "which turns it into a numpy array of entries; write the numbers with sympy "
+                "instead: sp.Identity(3) or sp.eye(3) for the identity.",
+                "not allowed",
+            )
+
+
 def read_answer(answer, shape, symbols, numeric=False):
     """A checked answer: ``("explicit", ImmutableMatrix)`` or ``("matrix", MatrixExpr)``.
 
@@ -407,6 +420,8 @@ def read_answer(answer, shape, symbols, numeric=False):
     else:
         if kind is np.ndarray and answer.ndim == 0:
             answer = answer.item()
+        if kind is np.ndarray and answer.dtype == object:
+            _refuse_numpy_of_matrix_expressions(answer)
         rows, got = _rows(answer)
         M = sp.ImmutableMatrix(rows)
     _walk(M, symbols, numeric)

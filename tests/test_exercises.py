@@ -96,8 +96,8 @@ EQUIVALENT = {
     "lagrange_identity": [xx * yy - xy * xy, (xx * yy - xy**2) * 1.0],
     "bac_cab": [(x.T * z)[0, 0] * 1, -(y.T * x)[0, 0]] and [[x.dot(z), -y.dot(x)]],
     "motion_from_points": [
-        [[0, 0, 1], [0, -1, 0], [1, 0, 0]],
-        sp.Matrix([[0, 0, 1], [0, -1, 0], [1, 0, 0]]),
+        [[0, -1, 0], [0, 0, -1], [1, 0, 0]],
+        sp.Matrix([[0, -1, 0], [0, 0, -1], [1, 0, 0]]),
     ],
     "which_in_so3": ["cad", {"d", "c", "a"}],
     "vb_from_va": [[3, 1, 2], np.array([3.0, 1.0, 2.0])],
@@ -264,8 +264,14 @@ def test_known_mistake_fails_with_its_own_hint(name, mid, code):
         ("half_turn", 2 * u * u.T, "multiple of the identity"),
         ("half_turn", 2 * u * u.T, "ω₁² + ω₂² + ω₃² = 1"),
         ("inverse_of_product", 2 * B * A.T, "constant multiple"),
-        ("motion_from_points", 2 * np.array([[0, 0, 1], [0, -1, 0], [1, 0, 0]]), "not orthonormal"),
-        ("motion_from_points", [[0, 1, 0], [0, 0, -1], [1, 0, 0]], "det R = −1"),
+        (
+            "motion_from_points",
+            2 * np.array([[0, -1, 0], [0, 0, -1], [1, 0, 0]]),
+            "not orthonormal",
+        ),
+        ("motion_from_points", [[0, -1, 0], [0, 0, -1], [-1, 0, 0]], "det R = −1"),
+        # the images written as rows: R was symmetric before, so this went unnoticed
+        ("motion_from_points", np.vstack([[0, 0, 1], [-1, 0, 0], [0, -1, 0]]), "transpose"),
         ("compose_frames", np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]]).T, "transpose"),
         ("angle_from_lengths", 60, "degrees"),
         ("angle_from_lengths", np.pi / 3 + 2 * np.pi, "full turn"),
@@ -745,7 +751,7 @@ def test_regression_a_right_answer_in_a_sympy_tuple_or_array_was_called_an_equat
 
 @pytest.mark.filterwarnings("ignore::PendingDeprecationWarning")  # numpy's view of np.matrix
 def test_regression_numpy_matrix_was_called_a_class_of_your_own():
-    result = check("motion_from_points", np.matrix([[0, 0, 1], [0, -1, 0], [1, 0, 0]]))
+    result = check("motion_from_points", np.matrix([[0, -1, 0], [0, 0, -1], [1, 0, 0]]))
     assert result.ok, result.message
 
 

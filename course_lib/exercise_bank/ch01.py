@@ -165,7 +165,7 @@ with sympy). Give the pair $(\alpha, \beta)$ as a list of two expressions.
         title="A motion from three points",
         statement=r"""
 A rigid body transformation $g(p) = Rp + d$ maps the origin to $(1, 2, 3)$, the point
-$e_1 = (1, 0, 0)$ to $(1, 2, 4)$ and $e_2 = (0, 1, 0)$ to $(1, 1, 3)$. Find $R$
+$e_1 = (1, 0, 0)$ to $(1, 2, 4)$ and $e_2 = (0, 1, 0)$ to $(0, 2, 3)$. Find $R$
 (Proposition 2: $g$ maps the frame $e_1, e_2, e_3$ to a right-handed orthonormal frame).
 Give a 3x3 array or matrix.
 """,

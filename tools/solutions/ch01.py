@@ -46,7 +46,7 @@ alpha_, beta_ = x.dot(z), -x.dot(y)
 assert sp.expand(lhs - (alpha_ * y + beta_ * z)) == sp.zeros(3, 1)
 answer_bac_cab = [alpha_, beta_]""",
     "motion_from_points": """\
-g0, g1, g2 = np.array([1, 2, 3]), np.array([1, 2, 4]), np.array([1, 1, 3])
+g0, g1, g2 = np.array([1, 2, 3]), np.array([1, 2, 4]), np.array([0, 2, 3])
 r1, r2 = g1 - g0, g2 - g0
 answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])""",
 }

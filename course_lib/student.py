@@ -109,10 +109,14 @@ def _stub_lines(cell):
 
 
 def _clear_region(lines, words, stub, where, hint=""):
-    """nbgrader's scan: (lines with every BEGIN..END region replaced by ``stub``, found any)."""
+    """nbgrader's scan: (lines with every BEGIN..END region replaced by ``stub``, found any).
+
+    ``lines`` are (line number in the instructor's cell, text) pairs, so that a message names
+    the line the instructor sees even after an earlier region was replaced.
+    """
     begin, end = f"BEGIN {words}", f"END {words}"
     out, start, found = [], None, False
-    for number, line in enumerate(lines, 1):
+    for number, line in lines:
         if begin in line:
             if start is not None:
                 raise StudentNotebookError(
@@ -121,13 +125,13 @@ def _clear_region(lines, words, stub, where, hint=""):
                 )
             start, found = number, True
             indent = re.match(r"\s*", line).group(0)
-            out += [indent + s for s in stub]
+            out += [(number, indent + s) for s in stub]
         elif end in line:
             if start is None:
                 raise StudentNotebookError(f"{where}: {end} without {begin} at line {number}{hint}")
             start = None
         elif start is None:
-            out.append(line)
+            out.append((number, line))
     if start is not None:
         raise StudentNotebookError(f"{where}: {begin} at line {start} without {end}{hint}")
     return out, found
@@ -136,7 +140,7 @@ def _clear_region(lines, words, stub, where, hint=""):
 def _clear_cell(cell, where):
     """Turn ``cell`` (a copy) into its student version, in place."""
     original = cell.source
-    lines = original.split("\n")
+    lines = list(enumerate(original.split("\n"), 1))
     for words, flag, kind in REGIONS:
         stub = _stub_lines(cell) if flag == "solution" else []
         hint = (
@@ -155,8 +159,8 @@ def _clear_cell(cell, where):
                 f'has no nbgrader metadata with "{flag}": true{hint}'
             )
         if flag == "solution" and _flag(cell, "solution") and not found:
-            lines = _stub_lines(cell)  # nbgrader replaces a solution cell without markers whole
-    cell.source = "\n".join(lines)
+            lines = [(1, text) for text in _stub_lines(cell)]  # nbgrader replaces it whole
+    cell.source = "\n".join(text for _, text in lines)
     if cell.source != original and "attachments" in cell:
         kept = set(_ATTACHMENT.findall(cell.source))
         cell.attachments = {k: v for k, v in cell.attachments.items() if k in kept}

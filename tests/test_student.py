@@ -390,6 +390,23 @@ def test_marker_rule_is_nbgraders_on_random_cells(cells):
     assert_agrees_with_nbgrader(nb)
 
 
+@pytest.mark.parametrize(
+    "source",
+    [
+        "text BEGIN SOLUTION text\nx = 1\n### END SOLUTION\nx = 1\n### END HIDDEN TESTS",
+        "text BEGIN SOLUTION text\nx = 1\n### END SOLUTION\n### END HIDDEN TESTS",
+    ],
+)
+def test_regression_a_stray_marker_after_a_solution_was_reported_at_the_wrong_line(source):
+    # Found by the property test above: the line of the stray END HIDDEN TESTS was counted in
+    # the cell with its solution already replaced by the stub, not in the instructor's cell.
+    cell = new_code_cell(source, metadata=nbgrader("cell-0", solution=True))
+    nb = new_notebook(cells=[cell], metadata={"kernelspec": KERNELSPEC})
+    with pytest.raises(StudentNotebookError, match=f"at line {source.count(chr(10)) + 1};"):
+        student_notebook(nb)
+    assert assert_agrees_with_nbgrader(nb) == "refused"
+
+
 def test_marker_rule_is_nbgraders_on_the_synthetic_and_the_real_notebooks():
     assert assert_agrees_with_nbgrader(synthetic_notebook()) == "same"
     for path in sorted(NOTEBOOKS.glob("*.ipynb")):

@@ -17,7 +17,8 @@ _TANGENT_PROPERTIES = (
     (
         lambda M: M.cross(_HELIX.diff(t)),
         "your vector has length 1 but does not point along ṗ(t): differentiate each component "
-        "(the chain rule brings out the 2 of cos 2t and sin 2t).",
+        "again, minding the signs and the chain rule (d/dt cos 2t = −2 sin 2t, "
+        "d/dt sin 2t = 2 cos 2t).",
     ),
 )
 

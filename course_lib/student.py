@@ -56,7 +56,13 @@ from pathlib import Path
 
 import nbformat
 
-__all__ = ["StudentNotebookError", "make_student_notebooks", "student_notebook", "main"]
+__all__ = [
+    "StudentNotebookError",
+    "make_student_notebooks",
+    "nbgrader_metadata",
+    "student_notebook",
+    "main",
+]
 
 CODE_STUB = "# YOUR CODE HERE"
 MARKDOWN_STUB = "YOUR ANSWER HERE"
@@ -78,6 +84,30 @@ class StudentNotebookError(ValueError):
 
 
 # --------------------------------------------------------------------------------- one notebook
+
+
+def nbgrader_metadata(
+    grade_id, *, solution=False, grade=False, locked=False, task=False, points=None
+):
+    """The cell metadata by which nbgrader (schema 3) knows a cell: ``{"nbgrader": {...}}``.
+
+    Examples
+    --------
+    >>> meta = nbgrader_metadata("x-check", grade=True, locked=True, points=2)["nbgrader"]
+    >>> meta["grade_id"], meta["schema_version"], meta["solution"], meta["points"]
+    ('x-check', 3, False, 2)
+    """
+    meta = {
+        "grade": grade,
+        "grade_id": grade_id,
+        "locked": locked,
+        "schema_version": 3,
+        "solution": solution,
+        "task": task,
+    }
+    if points is not None:
+        meta["points"] = points
+    return {"nbgrader": meta}
 
 
 def _where(nb_name, index, cell):
@@ -202,8 +232,7 @@ def student_notebook(nb, name="notebook"):
     --------
     >>> cell = nbformat.v4.new_code_cell(
     ...     "answer_x = None\n### BEGIN SOLUTION\nanswer_x = 1\n### END SOLUTION",
-    ...     metadata={"nbgrader": {"grade": False, "grade_id": "x", "locked": False,
-    ...                            "schema_version": 3, "solution": True, "task": False}})
+    ...     metadata=nbgrader_metadata("x", solution=True))
     >>> print(student_notebook(nbformat.v4.new_notebook(cells=[cell])).cells[0].source)
     answer_x = None
     # YOUR CODE HERE

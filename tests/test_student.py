@@ -33,6 +33,7 @@ from course_lib.student import (
     StudentNotebookError,
     main,
     make_student_notebooks,
+    nbgrader_metadata,
     student_notebook,
 )
 
@@ -49,17 +50,9 @@ WIDGET_STATE = {
 
 
 def nbgrader(grade_id, solution=True, grade=False, task=False, points=None):
-    meta = {
-        "grade": grade,
-        "grade_id": grade_id,
-        "locked": not solution,
-        "schema_version": 3,
-        "solution": solution,
-        "task": task,
-    }
-    if points is not None:
-        meta["points"] = points
-    return {"nbgrader": meta}
+    return nbgrader_metadata(
+        grade_id, solution=solution, grade=grade, locked=not solution, task=task, points=points
+    )
 
 
 def executed(cell, count):

@@ -31,6 +31,7 @@ if str(ROOT) not in sys.path:
 
 from course_lib import exercise_bank  # noqa: E402
 from course_lib.exercises import exercises  # noqa: E402
+from course_lib.student import nbgrader_metadata  # noqa: E402
 from tools.exercise_fingerprints import solutions  # noqa: E402
 
 MARK = "### "
@@ -46,20 +47,6 @@ another form is marked wrong, with a hint that says which form is asked for. Num
 compared to about nine digits: give exact values (`sp.sqrt(2)`, `sp.pi / 3`) or let Python
 compute them, rather than typing rounded decimals.
 The symbols come from `course_lib.exercises`."""
-
-
-def _nbgrader(grade_id, *, grade=False, solution=False, locked=False, points=None):
-    meta = {
-        "grade": grade,
-        "grade_id": grade_id,
-        "locked": locked,
-        "schema_version": 3,
-        "solution": solution,
-        "task": False,
-    }
-    if points is not None:
-        meta["points"] = points
-    return {"nbgrader": meta}
 
 
 def _solution_source(ex, code):
@@ -90,13 +77,13 @@ def section_cells(chapter):
             "markdown",
             f"ch{chapter}-exercises",
             INTRO,
-            _nbgrader(f"ch{chapter}-exercises", locked=True),
+            nbgrader_metadata(f"ch{chapter}-exercises", locked=True),
         ),
         (
             "code",
             f"ch{chapter}-exercises-setup",
             bank.SETUP,
-            _nbgrader(f"ch{chapter}-exercises-setup", locked=True),
+            nbgrader_metadata(f"ch{chapter}-exercises-setup", locked=True),
         ),
     ]
     for ex in exercises(chapter):
@@ -105,19 +92,19 @@ def section_cells(chapter):
                 "markdown",
                 f"{ex.name}-statement",
                 ex.markdown(),
-                _nbgrader(f"{ex.name}-statement", locked=True),
+                nbgrader_metadata(f"{ex.name}-statement", locked=True),
             ),
             (
                 "code",
                 f"{ex.name}-answer",
                 _solution_source(ex, sols[ex.name]),
-                _nbgrader(f"{ex.name}-answer", solution=True),
+                nbgrader_metadata(f"{ex.name}-answer", solution=True),
             ),
             (
                 "code",
                 f"{ex.name}-check",
                 _check_source(ex),
-                _nbgrader(f"{ex.name}-check", grade=True, locked=True, points=ex.points),
+                nbgrader_metadata(f"{ex.name}-check", grade=True, locked=True, points=ex.points),
             ),
         ]
     return cells

@@ -17,9 +17,10 @@ class CheckFailed(Exception):
 class KernelStalled(CheckFailed):
     """The notebook's kernel never became idle, or never ran the queued cells.
 
-    Seen intermittently on this machine for the first notebook a fresh server opens (cells stay
-    queued as [*] with the kernel shown idle). A student would reload the page; the runner retries
-    the notebook once with a fresh page and kernel, and says so in its log.
+    Seen intermittently on shared machines (cells stay queued as [*] with the kernel shown idle,
+    or the kernel never reports idle when the notebook opens). A student would reload the page;
+    the runner retries the notebook once on a new server with a new browser profile, and says
+    so in its log.
     """
 
 

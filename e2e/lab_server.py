@@ -118,6 +118,24 @@ class Server:
         except OSError:
             return "(no log)"
 
+    def report(self):
+        """What the server says of its kernels, and the warnings and errors of its log (for the
+        log of a failed notebook)."""
+        try:
+            kernels = self.api("/api/kernels")
+            said = ", ".join(
+                f"kernel {k['id'][:8]} {k['execution_state']} ({k['connections']} connection(s))"
+                for k in kernels
+            )
+            said = said or "no kernel"
+        except (urllib.error.URLError, ConnectionError, TimeoutError, ValueError) as exc:
+            said = f"no answer from /api/kernels ({exc})"
+        marks = ("[W ", "[E ", "[C ", "Traceback")
+        lines = [ln for ln in self.log_tail(400).splitlines() if any(m in ln for m in marks)]
+        if lines:
+            said += "; its log's warnings and errors, the last 10:\n" + "\n".join(lines[-10:])
+        return said
+
     def note_kernels(self):
         """Remember the pids of the server's child processes (the kernels), to check at exit."""
         for pid in children_of(self.proc.pid):

@@ -22,9 +22,12 @@ NOTEBOOKS_DIR (whatever chapters there are) the runner
    view, and the formula readout is typeset;
 4. saves a full-page screenshot to ``build/e2e/<notebook>.png``.
 
-A notebook that fails is retried once with a fresh page and kernel (the log says so): the first
-notebook a fresh server opens now and then never runs its queued cells. At the end the runner
-prints the median release -> redrawn figure time over all sliders (the goal is 200 ms or less).
+A notebook that fails is retried once on a new lab: a new server (own copy, own kernels) and a
+new browser profile, nothing kept from the failed attempt; the log says so and says what the
+server saw (its kernels and the end of its log). On a loaded machine a kernel now and then never
+reports idle when its notebook opens; a retry on the same server reconnected to that kernel and
+its explorer then showed no figure. At the end the runner prints the median release -> redrawn
+figure time over all sliders (the goal is 200 ms or less).
 
 The server, its kernels and the browser are stopped in ``finally`` blocks, also when a check
 fails or the run is interrupted. Exit status 0 when every check passed, 1 otherwise.
@@ -81,18 +84,76 @@ def parse_args(argv):
     return parser.parse_args(argv)
 
 
-def check_with_retry(context, server, nb, out_dir, timeout):
-    """Check one notebook; a failure is retried once (said out loud). Problems, latencies."""
-    problems, stalled, latencies = check_notebook(context, server, nb, out_dir, timeout)
-    if problems:
-        # A browser on a shared machine flakes now and then (most often a kernel that never runs
-        # the queued cells): one retry. A real defect fails twice and is reported with the
-        # second run's problems.
-        why = "kernel stalled" if stalled else "failed"
-        log(f"  {why}: {'; '.join(problems)}")
-        log("  retrying once with a fresh page and kernel")
-        problems, _, latencies = check_notebook(context, server, nb, out_dir, timeout)
-    return problems, latencies
+class Lab:
+    """A JupyterLab server on its own copy of the notebooks, and a Chromium profile of its own.
+
+    ``Lab(pw, src)`` starts both; ``close()`` (idempotent) stops them, deletes everything they
+    wrote and returns the cleanup problems (a server or kernel left running).
+    """
+
+    def __init__(self, pw, src):
+        self.tmp = Path(tempfile.mkdtemp(prefix="course-e2e-"))
+        self.server = self.context = None
+        try:
+            work = self.tmp / "notebooks"
+            shutil.copytree(src, work, ignore=shutil.ignore_patterns(".ipynb_checkpoints"))
+            self.server = Server(self.tmp, work)
+            self.server.wait_ready()
+            self.context = pw.chromium.launch_persistent_context(
+                str(self.tmp / "chromium-profile"),
+                executable_path=str(CHROMIUM),
+                headless=True,
+                args=CHROMIUM_FLAGS,
+                viewport=VIEWPORT,
+            )
+            self.context.add_init_script(path=str(HERE / "js" / "timing_hooks.js"))
+        except BaseException:
+            self.close()
+            raise
+        log(f"JupyterLab on 127.0.0.1:{self.server.port}, on a copy of {src.name}/")
+
+    def check(self, nb, out_dir, timeout):
+        """Check one notebook here: its problems, whether the kernel stalled, the latencies."""
+        try:
+            return check_notebook(self.context, self.server, nb, out_dir, timeout)
+        finally:
+            self.server.note_kernels()
+
+    def close(self):
+        problems = []
+        context, server, self.context, self.server = self.context, self.server, None, None
+        if context is not None:
+            try:
+                context.close()
+            except Exception as exc:  # the browser died: its processes are gone with it
+                problems.append(f"closing the browser failed: {exc}")
+        if server is not None:
+            try:
+                server.stop()
+            except CheckFailed as exc:
+                problems.append(str(exc))
+        shutil.rmtree(self.tmp, ignore_errors=True)
+        return problems
+
+
+def check_with_retry(pw, lab, src, nb, out_dir, timeout):
+    """Check one notebook; a failure is retried once on a new lab (said out loud).
+
+    Returns the problems, the latencies and the lab to go on with (a new one after a retry).
+    """
+    problems, stalled, latencies = lab.check(nb, out_dir, timeout)
+    if not problems:
+        return problems, latencies, lab
+    # A browser on a shared machine flakes now and then (most often a kernel that never reports
+    # idle): one retry, with nothing kept from the failed attempt. A real defect fails twice
+    # and is reported with the second run's problems.
+    log(f"  {'kernel stalled' if stalled else 'failed'}: {'; '.join(problems)}")
+    log(f"  the server saw: {lab.server.report()}")
+    log("  retrying once on a new JupyterLab server with a new browser profile")
+    cleanup = lab.close()
+    lab = Lab(pw, src)
+    problems, _, latencies = lab.check(nb, out_dir, timeout)
+    return cleanup + problems, latencies, lab
 
 
 def run_all(src, notebooks, out_dir, timeout):
@@ -102,46 +163,26 @@ def run_all(src, notebooks, out_dir, timeout):
     from playwright.sync_api import sync_playwright
 
     results, latencies = {}, []
-    tmp = Path(tempfile.mkdtemp(prefix="course-e2e-"))
-    server = None
+    lab = None
     try:
-        work = tmp / "notebooks"
-        shutil.copytree(src, work, ignore=shutil.ignore_patterns(".ipynb_checkpoints"))
-        server = Server(tmp, work)
-        server.wait_ready()
-        log(
-            f"JupyterLab on 127.0.0.1:{server.port}, {len(notebooks)} notebook(s) from a copy "
-            f"of {src.name}/"
-        )
         with sync_playwright() as pw:
-            context = pw.chromium.launch_persistent_context(
-                str(tmp / "chromium-profile"),
-                executable_path=str(CHROMIUM),
-                headless=True,
-                args=CHROMIUM_FLAGS,
-                viewport=VIEWPORT,
-            )
-            context.add_init_script(path=str(HERE / "js" / "timing_hooks.js"))
             try:
+                lab = Lab(pw, src)
+                log(f"{len(notebooks)} notebook(s)")
                 for nb in notebooks:
                     log(f"{nb}")
-                    problems, times = check_with_retry(
-                        context, server, nb.as_posix(), out_dir, timeout
+                    problems, times, lab = check_with_retry(
+                        pw, lab, src, nb.as_posix(), out_dir, timeout
                     )
                     results[str(nb)] = problems
                     latencies.extend(times)
-                    server.note_kernels()
             finally:
-                context.close()
+                if lab is not None:
+                    cleanup = lab.close()
+                    if cleanup:
+                        results.setdefault("(cleanup)", []).extend(cleanup)
     except CheckFailed as exc:
         results["(setup)"] = [str(exc)]
-    finally:
-        if server is not None:
-            try:
-                server.stop()
-            except CheckFailed as exc:
-                results.setdefault("(cleanup)", []).append(str(exc))
-        shutil.rmtree(tmp, ignore_errors=True)
     return results, latencies
 
 

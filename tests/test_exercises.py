@@ -763,3 +763,22 @@ def test_regression_a_dict_from_solve_got_could_not_read_an_entry():
 def test_regression_a_pair_in_the_wrong_order_got_components_1_and_2_are_wrong():
     result = check("ode_shifted", [sp.Rational(3, 2), sp.log(2)])
     assert not result.ok and "reverse order" in result.message
+
+
+@pytest.mark.parametrize("answer", [[[[1.0]]], [[1, 2, [3]]], [[0, 1, np.array([2.0])]]])
+def test_regression_a_list_nested_three_deep_got_could_not_read_an_entry_of_type_list(answer):
+    result = check("rigid_inverse", answer)
+    assert result.status == "malformed"
+    assert "nested three levels deep" in result.message and "[[a, b, c]" in result.message
+
+
+@pytest.mark.parametrize(
+    "answer",
+    [[-R.T * d], (-R.T * d,), [sp.Matrix([1, 2, 3])]],
+    ids=["list of a MatMul", "tuple of a MatMul", "list of a Matrix"],
+)
+def test_regression_a_matrix_inside_a_list_got_could_not_read_an_entry_of_type_matmul(answer):
+    result = check("rigid_inverse", answer)
+    assert result.status == "malformed"
+    assert "itself a 3x1 matrix" in result.message and "not a list that holds it" in result.message
+    assert check("rigid_inverse", -R.T * d).ok  # the matrix itself is read and right

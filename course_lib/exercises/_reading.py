@@ -295,6 +295,11 @@ def _scalar(v):
             "own); give plain numbers or sympy expressions.",
             "not allowed",
         )
+    if isinstance(v, (sp.MatrixBase, MatrixExpr)):
+        raise Rejected(
+            f"an entry of your answer is itself a {v.shape[0]}x{v.shape[1]} matrix "
+            f"({kind.__name__}): give the matrix itself, not a list that holds it."
+        )
     raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an expression.")
 
 
@@ -340,6 +345,12 @@ def _rows(answer):
         if type(r) is np.ndarray:
             r = r.tolist()
         if type(r) in (list, tuple):
+            if any(type(_plain(v)) in (list, tuple, np.ndarray) for v in r):
+                raise Rejected(
+                    "wrong shape: your answer is nested three levels deep (a list inside a "
+                    "row); give a vector as [a, b, c] or a matrix as a list of rows "
+                    "[[a, b, c], [d, e, f], [g, h, i]]."
+                )
             rows.append([_scalar(v) for v in r])
         else:
             rows.append([_scalar(r)])

@@ -48,6 +48,7 @@ def _dim(ax):
 
 
 def _require_3d(ax, func):
+    """A TypeError naming ``func`` unless ``ax`` is a 3D axes."""
     if _dim(ax) != 3:
         raise TypeError(
             f"{func} needs a 3D axes (projection='3d', e.g. from axes3d); got a 2D axes"
@@ -66,6 +67,8 @@ def _limits(lim):
     raise ValueError(f"lim must be a positive number or a pair (lo, hi) with lo < hi, got {lim!r}")
 
 
+# --------------------------------------------------------------------------------------------
+# Figures and axes
 # --------------------------------------------------------------------------------------------
 
 

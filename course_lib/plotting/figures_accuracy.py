@@ -151,7 +151,7 @@ def plot_convergence(
 
 
 # --------------------------------------------------------------------------------------------
-# Chapter 04: composing, interpolating and reading rotations
+# Chapter 04: errors near a limit (the angle of a rotation near 180°)
 # --------------------------------------------------------------------------------------------
 
 

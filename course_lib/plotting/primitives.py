@@ -157,6 +157,7 @@ def _unit(v):
     return v / n if n > 0 else v
 
 
+# --------------------------------------------------------------------------------------------
 # Primitives
 # --------------------------------------------------------------------------------------------
 
@@ -542,6 +543,11 @@ def draw_curve(ax, points, label=None, color="black", style="solid", arrow=False
         text = as_str(label, "label")
         artists.append(_text(ax, pos, text, color=color, ha="left", va="bottom"))
     return Drawn("curve", artists, P)
+
+
+# --------------------------------------------------------------------------------------------
+# Helpers of the chapters' figures: a rotation axis, a frame with its labels placed
+# --------------------------------------------------------------------------------------------
 
 
 def _axis_line(ax, direction, label=None, origin=None, color="0.45"):

@@ -243,12 +243,12 @@ def to_matrix(q, tol=TOL):
     r"""The rotation matrix of unit quaternions :math:`q = (w, v)`.
 
     .. math:: R = I + 2w\,\hat v + 2\hat v^2 =
-        \begin{bmatrix} 1 - 2(y^2 + z^2) & 2(xy - wz) & 2(xz + wy) \\
-        2(xy + wz) & 1 - 2(x^2 + z^2) & 2(yz - wx) \\
-        2(xz - wy) & 2(yz + wx) & 1 - 2(x^2 + y^2) \end{bmatrix}
+        \begin{bmatrix} w^2 + x^2 - y^2 - z^2 & 2(xy - wz) & 2(xz + wy) \\
+        2(xy + wz) & w^2 - x^2 + y^2 - z^2 & 2(yz - wx) \\
+        2(xz - wy) & 2(yz + wx) & w^2 - x^2 - y^2 + z^2 \end{bmatrix}
 
     ``q`` is checked to have norm 1 within ``tol`` and then divided by its norm, so R is
-    orthogonal to rounding. ``to_matrix(-q)`` equals ``to_matrix(q)``.
+    orthogonal to rounding; entries are clipped to [−1, 1], which rounding could pass. ``to_matrix(-q)`` equals ``to_matrix(q)``.
 
     Parameters
     ----------
@@ -269,16 +269,17 @@ def to_matrix(q, tol=TOL):
     q = as_unit_quaternions(q, "q", tol)
     q = q / np.sqrt(np.sum(q * q, axis=-1, keepdims=True))
     w, x, y, z = np.moveaxis(q, -1, 0)
+    ww, xx, yy, zz = w * w, x * x, y * y, z * z
     x2, y2, z2 = x + x, y + y, z + z
-    xx, yy, zz = x * x2, y * y2, z * z2
     xy, xz, yz = x * y2, x * z2, y * z2
     wx, wy, wz = w * x2, w * y2, w * z2
-    rows = (
-        (1.0 - (yy + zz), xy - wz, xz + wy),
-        (xy + wz, 1.0 - (xx + zz), yz - wx),
-        (xz - wy, yz + wx, 1.0 - (xx + yy)),
+    rows = (  # the diagonal as w² + x² − y² − z²: exactly 0 for q = (1, 0, 0, 1)/√2
+        ((ww + xx) - (yy + zz), xy - wz, xz + wy),
+        (xy + wz, (ww + yy) - (xx + zz), yz - wx),
+        (xz - wy, yz + wx, (ww + zz) - (xx + yy)),
     )
-    return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    R = np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    return np.clip(R, -1.0, 1.0, out=R)  # rounding can pass ±1 (as in so3.exp); R's entries can't
 
 
 def _product(p, q):

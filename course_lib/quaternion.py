@@ -49,6 +49,8 @@ _F64 = np.dtype(np.float64)
 _CHUNK = 8192
 # slerp: below this angle between q0 and q1 on S³, sin(tΩ)/sin Ω = t to within Ω²/6 < 1e-17.
 _SLERP_LINEAR = 1e-8
+# rotate: beyond this the partial sums v + 2w(u × v) + ... (up to 3‖v‖) could overflow.
+_HUGE = 2.0**1020
 
 
 def from_axis_angle(axis, angle, tol=TOL):
@@ -380,6 +382,19 @@ def rotate(q, v, tol=TOL):
     q = as_unit_quaternions(q, "q", tol)
     v = as_vectors(v, "v")
     broadcast_batch(("q", q, 1), ("v", v, 1))
+    if np.abs(v).max(initial=0.0) > _HUGE:  # ‖R v‖ = ‖v‖ fits; the sums on the way may not
+        with np.errstate(over="ignore"):
+            out = _rotate(q, v * 0.0625) * 16.0  # powers of two: exact
+        if not np.isfinite(out).all():
+            raise ValueError(
+                f"v is too long to rotate in float64: a rotated entry passes 1.8e308 "
+                f"(‖v‖ up to {float(np.max(vector_norm(v))):.3g}); scale v down first"
+            )
+        return out
+    return _rotate(q, v)
+
+
+def _rotate(q, v):
     w, u = q[..., :1], q[..., 1:]
     t = np.cross(u, v)
     t += t

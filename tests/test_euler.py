@@ -460,3 +460,41 @@ def test_bad_seq_gets_a_clear_error(seq, exc, pattern):
 def test_bad_angles_and_matrices_get_a_clear_error(call, exc, pattern):
     with pytest.raises(exc, match=pattern):
         call()
+
+
+# --- adversarial: magnitudes, dtypes, layouts, empty batches --------------------------------
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=200)
+@given(st.lists(finite, min_size=9, max_size=9).map(lambda x: np.array(x).reshape(3, 3)))
+def test_any_finite_matrix_gives_finite_angles_or_names_R(M):
+    for seq in ("xyz", "ZXZ"):
+        try:
+            a = euler.from_matrix(M, seq)
+        except ValueError as err:
+            assert str(err).startswith("R "), str(err)
+        else:
+            assert np.all(np.isfinite(a))
+            assert np.abs(euler.to_matrix(a, seq) - M).max() <= 1e-8  # M is a rotation
+
+
+@given(st.lists(finite, min_size=3, max_size=3).map(np.array))
+def test_any_finite_angles_give_a_rotation(angles):
+    for seq in ("xyz", "ZXZ"):
+        assert so3.is_rotation(euler.to_matrix(angles, seq))
+
+
+def test_dtypes_layouts_and_empty_batches():
+    R = so3.random_rotations(5, seed=2)
+    a = euler.from_matrix(R, "ZYX")
+    readonly = R.copy()
+    readonly.flags.writeable = False
+    for layout in (readonly, np.asfortranarray(R), R.tolist(), R[..., ::-1][..., ::-1]):
+        assert np.array_equal(euler.from_matrix(layout, "ZYX"), a)
+    assert np.array_equal(euler.from_matrix(np.eye(3, dtype=np.float32), "xyz"), np.zeros(3))
+    assert np.array_equal(euler.to_matrix(np.zeros(3, dtype=np.int8), "xyz"), np.eye(3))
+    assert euler.from_matrix(np.zeros((0, 3, 3)), "xyz").shape == (0, 3)
+    assert euler.to_matrix(np.zeros((2, 0, 3)), "XYZ").shape == (2, 0, 3, 3)
+    assert euler.from_matrix(np.broadcast_to(np.eye(3), (4, 2, 3, 3)), "zxz").shape == (4, 2, 3)

@@ -583,3 +583,81 @@ def test_to_matrix_of_a_half_turn_about_the_yz_diagonal_has_no_entry_below_minus
     # with 1 − 2(y² + z²), R_11 was −1.0000000000000004 for q = (0, 0, √½, √½)
     R = Q.to_matrix([0.0, 0.0, np.sqrt(0.5), np.sqrt(0.5)])
     assert R[0, 0] == -1.0 and np.abs(R).max() <= 1.0
+
+
+# --- adversarial: magnitudes, dtypes, layouts, empty batches --------------------------------
+
+finite = st.floats(allow_nan=False, allow_infinity=False)
+
+
+def _finite_or_clear_error(fn, *args, names=("q", "R", "p", "v", "q0", "q1")):
+    """fn(*args) gives finite numbers (no RuntimeWarning: pytest makes it an error) or a
+    ValueError naming one of the arguments."""
+    try:
+        out = fn(*args)
+    except ValueError as err:
+        assert any(str(err).startswith(n + " ") for n in names), str(err)
+        assert "nan" not in str(err).lower() or "NaN or infinity" in str(err)
+        return None
+    for value in out if isinstance(out, tuple) else (out,):
+        assert np.all(np.isfinite(value)), (fn, args, value)
+    return out
+
+
+@given(st.lists(finite, min_size=4, max_size=4).map(np.array))
+def test_any_finite_4_vector_gives_a_rotation_or_names_q(q):
+    R = _finite_or_clear_error(Q.to_matrix, q)
+    assert R is None or so3.is_rotation(R)
+    for fn in (Q.conjugate, Q.to_axis_angle, lambda q: Q.multiply(q, q)):
+        _finite_or_clear_error(fn, q)
+
+
+@given(st.lists(finite, min_size=9, max_size=9).map(lambda x: np.array(x).reshape(3, 3)))
+def test_any_finite_matrix_gives_a_unit_quaternion_or_names_R(M):
+    q = _finite_or_clear_error(Q.from_matrix, M)
+    assert q is None or abs(np.linalg.norm(q) - 1) <= 2 * EPS
+
+
+@given(quats, st.lists(finite, min_size=3, max_size=3).map(np.array))
+def test_rotate_keeps_the_length_of_every_finite_vector(q, v):
+    # the partial sums overflowed for ‖v‖ near 1.8e308 (inf in a representable answer)
+    out = _finite_or_clear_error(Q.rotate, q, v)
+    big = np.abs(v).max()
+    if out is None:  # refused: only where a rotated entry really passes 1.8e308
+        assert np.linalg.norm(v / big) > 1.7e308 / big
+    elif big > 0:
+        assert abs(np.linalg.norm(out / big) - np.linalg.norm(v / big)) <= 1e-14
+
+
+@pytest.mark.parametrize(
+    "dtype", [np.float16, np.float32, np.longdouble, np.int8, np.int64, np.uint8]
+)
+def test_every_real_dtype_is_read_as_float64(dtype):
+    assert np.array_equal(Q.from_matrix(np.eye(3, dtype=dtype)), [1, 0, 0, 0])
+    assert np.array_equal(Q.to_matrix(np.array([1, 0, 0, 0], dtype=dtype)), np.eye(3))
+
+
+def test_every_memory_layout_gives_the_same_result():
+    R = so3.random_rotations(6, seed=1)
+    q = Q.from_matrix(R)
+    padded = np.zeros(R.shape + (2,))
+    padded[..., 0] = R
+    readonly = R.copy()
+    readonly.flags.writeable = False
+    layouts = [padded[..., 0], readonly, np.asfortranarray(R), R[..., ::-1][..., ::-1]]
+    layouts += [np.ma.masked_array(R, mask=np.zeros(R.shape, bool)), R.tolist()]
+    for layout in layouts:
+        assert np.array_equal(Q.from_matrix(layout), q)
+    assert np.array_equal(Q.to_matrix(np.asfortranarray(q)), Q.to_matrix(q))
+    with pytest.raises(ValueError, match="masked array with 1 masked entry"):
+        Q.to_matrix(np.ma.masked_array([1.0, 0, 0, 0], mask=[0, 1, 0, 0]))
+
+
+def test_empty_batches_keep_their_shape():
+    assert Q.from_matrix(np.zeros((0, 3, 3))).shape == (0, 4)
+    assert Q.to_matrix(np.zeros((0, 4))).shape == (0, 3, 3)
+    assert Q.multiply(np.zeros((0, 4)), [1, 0, 0, 0]).shape == (0, 4)
+    assert Q.rotate(np.zeros((0, 4)), [1.0, 0, 0]).shape == (0, 3)
+    assert Q.slerp(np.zeros((0, 4)), [1, 0, 0, 0], 0.5).shape == (0, 4)
+    assert Q.to_axis_angle(np.zeros((0, 4)))[1].shape == (0,)
+    assert Q.from_axis_angle(np.zeros((0, 3)), 1.0).shape == (0, 4)

@@ -207,6 +207,39 @@ def test_scipy_generic_quat_matrix():
         Q.to_matrix(x[:, WXYZ])  # scipy normalises; we refuse, naming the worst
 
 
+@pytest.mark.parametrize("ndim", range(1, 6))
+def test_scipy_from_single_nd_quaternion(ndim):
+    x = np.array([3.0, 4, 0, 0]).reshape((1,) * (ndim - 1) + (4,)) / 5  # scalar last
+    R = Q.to_matrix(x[..., WXYZ])
+    assert R.shape == (1,) * (ndim - 1) + (3, 3)
+    assert np.allclose(Q.from_matrix(R), x[..., WXYZ], rtol=1e-15, atol=1e-16)
+
+
+def test_scipy_from_quat_scalar_first():
+    assert np.allclose(Q.to_matrix([1, 0, 0, 0]), np.eye(3), rtol=1e-15, atol=1e-16)
+    tiled = np.tile([1.0, 0, 0, 0], (10, 1))
+    assert np.allclose(Q.to_matrix(tiled), np.tile(np.eye(3), (10, 1, 1)), rtol=1e-15, atol=1e-16)
+    q = np.random.RandomState(0).randn(100, 4)
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    expected = Rotation.from_quat(q, scalar_first=True).as_matrix()
+    assert np.allclose(Q.to_matrix(q), expected, rtol=0, atol=1e-15)
+    for i in range(0, 100, 9):
+        assert np.allclose(Q.to_matrix(q[i]), expected[i], rtol=0, atol=1e-15)
+
+
+def test_scipy_as_quat_scalar_first():
+    from course_lib import euler
+
+    assert np.array_equal(Q.from_matrix(euler.to_matrix(np.zeros(3), "xyz")), [1, 0, 0, 0])
+    tiled = Q.from_matrix(euler.to_matrix(np.zeros((10, 3)), "xyz"))
+    assert np.array_equal(tiled, np.tile([1.0, 0, 0, 0], (10, 1)))
+    q = np.random.RandomState(0).randn(100, 4)
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    r = Rotation.from_quat(q)  # scalar last
+    expected = r.as_quat(canonical=True, scalar_first=True)
+    assert np.allclose(Q.from_matrix(r.as_matrix()), expected, rtol=0, atol=1e-15)
+
+
 def test_scipy_quat_canonical():
     # scipy's canonical=True: w >= 0, then the first non-zero of x, y, z positive
     for q_xyzw in ([0.0, 0, 0, -1], [-1.0, 0, 0, 0], [0.0, -1, 0, 0], [0.0, 0, -1, 0]):

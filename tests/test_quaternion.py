@@ -559,6 +559,38 @@ def test_spatialmath_qangle():
         assert np.isclose(Q.to_axis_angle(relative)[1], np.pi / 2, rtol=1e-15)
 
 
+# --- ported from spatialmath-python tests/test_quaternion.py (UnitQuaternion) ----------------
+
+
+def test_spatialmath_unitquaternion_canonic():
+    c, s = np.cos(np.pi / 4), np.sin(np.pi / 4)
+    assert np.array_equal(Q.from_matrix(so3.rot_x(0)), [1, 0, 0, 0])
+    for axis, rot in zip(np.eye(3), (so3.rot_x, so3.rot_y, so3.rot_z)):
+        assert np.allclose(Q.from_matrix(rot(np.pi / 2)), np.r_[c, s * axis], atol=1e-16)
+        assert np.allclose(Q.from_matrix(rot(-np.pi / 2)), np.r_[c, -s * axis], atol=1e-16)
+        for theta in (np.pi, -np.pi):  # qcompare accepts q or −q
+            assert same_rotation(Q.from_matrix(rot(theta)), np.r_[0.0, axis], 1e-16)
+
+
+def test_spatialmath_unitquaternion_interp():
+    from course_lib import euler
+
+    identity = np.array([1.0, 0, 0, 0])
+    q = Q.from_matrix(euler.to_matrix([0.2, 0.3, 0.4], "xyz"))  # UnitQuaternion.RPY
+    rx = Q.from_axis_angle([1, 0, 0], np.pi / 2)
+    assert np.allclose(Q.slerp(identity, q, 0), identity)
+    assert np.allclose(Q.slerp(identity, q, 1), q, atol=1e-16)
+    half = Q.slerp(identity, q, 0.5)
+    assert np.allclose(Q.multiply(half, half), q, atol=1e-15)
+    assert Q.slerp(identity, rx, np.linspace(0, 1, 11)).shape == (11, 4)
+    both = Q.slerp(q, rx, [0, 1])
+    assert np.allclose(both, [q, rx], atol=1e-16)
+    # the "shortest" case (commented out there): half way from Rx(0.9π) to Rx(−0.9π) is Rx(π)
+    q1, q2 = Q.from_axis_angle([1, 0, 0], [0.9 * np.pi, -0.9 * np.pi])
+    middle = Q.slerp(q1, q2, 0.5)
+    assert same_rotation(middle, Q.from_axis_angle([1, 0, 0], np.pi), 1e-15)
+
+
 # --- shapes, broadcasting, bad input ----------------------------------------------------
 
 

@@ -44,7 +44,13 @@ EPS = 1.5 * TOL
 
 @lru_cache(maxsize=4096)
 def stretched(name, label, payload):
-    """Salted scrypt digest (16 hex digits) of ``payload`` for exercise ``name``, ``label``."""
+    """Salted scrypt digest (16 hex digits) of ``payload`` for exercise ``name``, ``label``.
+
+    Examples
+    --------
+    >>> len(stretched("example", "entry0", (3,)))
+    16
+    """
     salt = f"{_SALT}|{name}|{label}".encode()
     out = hashlib.scrypt(str(payload).encode(), salt=salt, dklen=8, maxmem=2**25, **SCRYPT)
     return out.hex()
@@ -60,7 +66,16 @@ def cell_digest(name, label, z, step):
 
 
 def candidate_cells(z, step, eps=EPS):
-    """Every tuple of cells the values ``z`` may have been rounded to, allowing ``eps``."""
+    r"""Every tuple of cells the values ``z`` may have been rounded to, allowing ``eps``.
+
+    A value :math:`v` is in cell :math:`c = \lfloor v/h \rfloor`; within ``eps`` of the edge
+    of its cell it may also be in the neighbouring one.
+
+    Examples
+    --------
+    >>> list(candidate_cells([0.5, 0.99], 1.0, eps=0.05))
+    [(0, 0), (0, 1)]
+    """
     z = np.atleast_1d(np.asarray(z, dtype=float))
     options = []
     for v in z:

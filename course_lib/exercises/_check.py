@@ -293,10 +293,14 @@ def _numbers(M):
     return vals.real
 
 
-def _entry_ok(name, fp, i, value, label=None):
-    stored = fp["entries"][i] if label is None else label[1][i]
-    salt = f"entry{i}" if label is None else f"{label[0]} {i}"
-    return D.matches(name, salt, value, E.STEP_NUMBER, stored, eps=E.TOL)
+def _entry_ok(name, fp, i, value):
+    """Does entry ``i`` of a numeric answer, ``value``, match the right one (within TOL)?"""
+    return D.matches(name, f"entry{i}", value, E.STEP_NUMBER, fp["entries"][i], eps=E.TOL)
+
+
+def _mistake_entry_ok(name, mid, digests, i, value):
+    """Does entry ``i`` match that of the mistake ``mid`` stored as digests of its values?"""
+    return D.matches(name, f"mistake {mid} {i}", value, E.STEP_NUMBER, digests[i], eps=E.TOL)
 
 
 def _entries_ok(name, fp, vec):
@@ -313,11 +317,12 @@ def _all_right(name, fp, vec):
 
 
 def _number_mistake(ex, fp, mid, rec, v):
+    """Did the student make the known mistake ``mid``? Its transformation (a permutation of the
+    entries, then an operation per entry) turns the student's answer into the right one on the
+    entries it names; or, stored as digests of its values, the answer matches them."""
     name = ex.name
     if "entries" in rec:
-        return all(
-            _entry_ok(name, fp, i, x, (f"mistake {mid}", rec["entries"])) for i, x in enumerate(v)
-        )
+        return all(_mistake_entry_ok(name, mid, rec["entries"], i, x) for i, x in enumerate(v))
     t = rec["transform"]
     moved = v[PERMUTATIONS[t["perm"]](ex.answer.shape)]
     checked = False

@@ -23,12 +23,13 @@ _TURN = {"X": so3.rot_x, "Y": so3.rot_y, "Z": so3.rot_z}
 _WORD = {0: "", 1: "the new ", 2: "the newest "}
 
 
-def euler_steps(angles, seq="ZYX", elev=22.0, azim=-55.0):
+def euler_steps(angles, seq="ZYX", elev=25.0, azim=-30.0):
     r"""Three panels: the turns of an intrinsic sequence, each about the body's current axis.
 
-    Panel :math:`k` shows the frame :math:`R_{k-1}` (dashed, named :math:`k-1`) and
-    :math:`R_k = R_{k-1}R_{s_k}(\alpha_k)` (solid, named :math:`k`), where :math:`s_k` is the
-    k-th letter of ``seq``: turns about body axes multiply on the right.
+    Panel :math:`k` shows the frame :math:`R_{k-1}` (short, dashed, unlabelled) and
+    :math:`R_k = R_{k-1}R_{s_k}(\alpha_k)` (solid, axes labelled with subscript :math:`k`),
+    where :math:`s_k` is the k-th letter of ``seq``: turns about body axes multiply on the
+    right.
 
     Parameters
     ----------
@@ -63,16 +64,21 @@ def euler_steps(angles, seq="ZYX", elev=22.0, azim=-55.0):
             {
                 "title": title,
                 "frames": [
-                    {"R": frames[k], "label": str(k), "style": "dashed", "scale": 0.8},
+                    {"R": frames[k], "label": str(k), "style": "dashed", "scale": 0.6},
                     {"R": frames[k + 1], "label": str(k + 1), "name": False},
                 ],
             }
         )
-    fig, _, _ = frame_panels(panels, lim=1.2, elev=elev, azim=azim)
+    fig, _, drawn = frame_panels(panels, lim=1.2, elev=elev, azim=azim)
+    for before, _after in drawn:  # the frame before the turn: arrows only, no names
+        for text in before.artists[1:]:
+            if not hasattr(text, "get_text"):
+                continue
+            text.remove()
     return fig
 
 
-def gimbal_axes(pitches, yaw=0.5, elev=18.0, azim=-60.0):
+def gimbal_axes(pitches, yaw=0.5, elev=20.0, azim=20.0):
     r"""One panel per pitch: the axes of the yaw, pitch and roll turns of roll-pitch-yaw.
 
     For :math:`R = R_z(\psi)R_y(\theta)R_x(\phi)` the three turns are about the world's
@@ -135,9 +141,9 @@ def double_cover(turns=2.0):
     for k in range(1, int(theta[-1] / (2 * np.pi)) + 1):
         ax.axvline(2 * k, color="0.6", linewidth=0.8)
     ax.set_xlabel(r"angle $\theta$ (multiples of $\pi$)")
-    ax.set_ylim(-1.15, 1.15)
-    ax.set_title("A full turn brings R back, the quaternion only to $-q$")
-    ax.legend(loc="lower left")
+    ax.set_ylim(-1.15, 1.75)
+    ax.set_title("A full turn brings $R$ back, the quaternion only to $-q$")
+    ax.legend(loc="upper center", ncol=2)
     return fig
 
 

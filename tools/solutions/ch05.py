@@ -13,9 +13,13 @@ q_x = quaternion.from_axis_angle([1, 0, 0], np.pi / 2)
 q_z = quaternion.from_axis_angle([0, 0, 1], np.pi / 2)
 answer_compose_quaternions = quaternion.multiply(q_z, q_x)  # world axes: from the left""",
     "angles_of_matrix": """\
-R = sp.Matrix([[-sp.sqrt(3) / 4, sp.Rational(1, 4), -sp.sqrt(3) / 2],
-               [sp.Rational(3, 4), -sp.sqrt(3) / 4, -sp.Rational(1, 2)],
-               [-sp.Rational(1, 2), -sp.sqrt(3) / 2, 0]])
+R = sp.Matrix(
+    [
+        [-sp.sqrt(3) / 4, sp.Rational(1, 4), -sp.sqrt(3) / 2],
+        [sp.Rational(3, 4), -sp.sqrt(3) / 4, -sp.Rational(1, 2)],
+        [-sp.Rational(1, 2), -sp.sqrt(3) / 2, 0],
+    ]
+)
 yaw = sp.atan2(R[1, 0], R[0, 0])
 pitch = sp.atan2(-R[2, 0], sp.sqrt(R[0, 0] ** 2 + R[1, 0] ** 2))
 roll = sp.atan2(R[2, 1], R[2, 2])

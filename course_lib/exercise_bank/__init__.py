@@ -14,7 +14,7 @@ from importlib import import_module
 __all__ = ["CHAPTERS", "all_exercises", "chapter_module"]
 
 #: Chapter number -> module name.
-CHAPTERS = {1: "ch01", 2: "ch02", 3: "ch03", 4: "ch04"}
+CHAPTERS = {1: "ch01", 2: "ch02", 3: "ch03", 4: "ch04", 5: "ch05"}
 
 
 def chapter_module(chapter):

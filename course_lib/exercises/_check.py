@@ -32,6 +32,18 @@ _UNIT_HINT = (
 )
 
 
+_COMPLEX_ANSWER = (
+    "your answer is complex; a real answer is expected. If it came from sp.solve, pick the "
+    "real solution (sympy lists every root; a symbol made with real=True keeps only real "
+    "ones); if it came from acos or asin, their argument must lie in [−1, 1]: recheck it."
+)
+_NOT_FINITE = (
+    "your answer contains nan or infinity (or a number too large for double precision): "
+    "look for a division by zero, or acos/asin/sqrt of a number outside their domain "
+    "(a cosine lies in [−1, 1])."
+)
+
+
 def _join(items):
     items = list(items)
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
@@ -106,6 +118,12 @@ def _positions(bad, shape):
     return f"{noun} {_join(names)} {verb} wrong."
 
 
+def _free_symbols(M):
+    """The free symbols of a read answer (a sympy object, or a list of them)."""
+    items = M if isinstance(M, (list, tuple)) else [M]
+    return set().union(*(getattr(m, "free_symbols", set()) for m in items))
+
+
 def _uses_omega(spec):
     return bool(set(spec.domain) & set(S.omega)) or S.W in set(spec.allowed or ())
 
@@ -124,6 +142,8 @@ _TRANSPOSE_W = (
 
 class _Symbolic:
     """A symbolic answer's values and the comparisons of its features with the digests."""
+
+    writes_omega = True  # False for an answer written in W alone (set by judge_expr)
 
     def __init__(self, ex, fp, A, pts, near):
         self.ex, self.fp, self.A, self.pts, self.near = ex, fp, A, pts, near
@@ -219,7 +239,8 @@ def _generic_hint(s):
             "your answer differs from the right one by a multiple of the identity: "
             "check its I term."
         )
-        return msg + (" " + _UNIT_HINT if s.spec.unit_omega else "")
+        # the ‖ω‖² advice is for answers in ω₁, ω₂, ω₃ or u; in W alone no ‖ω‖² can appear
+        return msg + (" " + _UNIT_HINT if s.spec.unit_omega and s.writes_omega else "")
     if s.feature("near"):
         return (
             "your answer agrees with the right one at some values of the symbols but not "
@@ -255,6 +276,8 @@ def judge_expr(ex, fp, answer):
     pts, near = E.points(ex.name, spec)
     A = E.values(form, M, syms, pts)
     s = _Symbolic(ex, fp, A.reshape((len(A), *spec.shape)), pts, near)
+    free = _free_symbols(M)
+    s.writes_omega = bool(set(S.omega) & free) or S.W not in free
     if s.right(s.A):
         if violation:
             return (
@@ -283,13 +306,11 @@ def _numbers(M):
     except (TypeError, ValueError, OverflowError):
         raise Rejected("could not read your answer as numbers.") from None
     if not np.all(np.isfinite(vals)):
-        raise Rejected(
-            "your answer contains nan or infinity (or a number too large for double precision)."
-        )
+        raise Rejected(_NOT_FINITE)
     if np.max(np.abs(vals), initial=0.0) >= MAX_MAGNITUDE:
         raise Rejected(f"your answer evaluates to {TOO_LARGE}.")
     if np.max(np.abs(vals.imag)) > E.TOL:
-        raise Rejected("your answer is complex; a real answer is expected.")
+        raise Rejected(_COMPLEX_ANSWER)
     return vals.real
 
 

@@ -175,9 +175,18 @@ def problem_set_cells(chapter):
 # Merging with what is on disk
 # ---------------------------------------------------------------------------------------------
 
-OWNED = re.compile(
+_OWNED_ID = re.compile(
     r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|answer|check))$"
 )
+
+
+def _owned(cell):
+    """Whether the tool wrote ``cell``: an exercise-style id and nbgrader metadata.
+
+    A chapter's own cells (ids such as ``angles-check``) and an instructor's cells (random ids)
+    are never the tool's, whatever their ids look like.
+    """
+    return bool(_OWNED_ID.match(cell.get("id") or "")) and "nbgrader" in cell.get("metadata", {})
 
 
 def _digest(code):
@@ -227,7 +236,7 @@ def sync_problem_set(nb, chapter, path=None):
         cid = cell.get("id")
         if cid in ids:
             prev = cid
-        elif not OWNED.match(cid or ""):
+        elif not _owned(cell):
             follows.setdefault(prev, []).append(cell)
     cells = follows.get(None, [])
     for kind, cid, src, meta in generated:
@@ -245,7 +254,7 @@ def sync_problem_set(nb, chapter, path=None):
 def sync_chapter(nb, chapter):
     """The chapter ``nb`` without exercise cells, ending with the pointer to its problem set."""
     pid = f"ch{chapter}-problem-set"
-    cells = [c for c in nb.cells if not OWNED.match(c.get("id") or "") and c.get("id") != pid]
+    cells = [c for c in nb.cells if not _owned(c) and c.get("id") != pid]
     old = next((c for c in nb.cells if c.get("id") == pid), None)
     source = pointer_source(chapter)
     pointer = (

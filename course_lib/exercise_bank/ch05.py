@@ -1,13 +1,12 @@
 r"""Exercises of chapter 5 (orientation in practice: Euler angles, gimbal lock, quaternions)."""
 
-from course_lib.exercises._model import Exercise, Expr, Value
-from course_lib.symbolic import alpha, beta
+from course_lib.exercises._model import Exercise, Value
 
 CHAPTER = 5
 SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
-    "from course_lib import euler, quaternion\n"
-    "from course_lib.exercises import alpha, beta, check"
+    "from course_lib import euler, quaternion, so3\n"
+    "from course_lib.exercises import check"
 )
 
 EXERCISES = [
@@ -71,66 +70,92 @@ orientation, with $w > 0$. Give a 4-vector.
         },
     ),
     Exercise(
-        name="angles_of_matrix",
+        name="proper_euler_angles",
         chapter=5,
         number=4,
         level="core",
-        title="Roll, pitch and yaw of a rotation",
+        title="Proper Euler angles of a rotation",
         statement=r"""
-A drone reports its orientation as the rotation matrix
-$$R = \begin{bmatrix} -\tfrac{\sqrt3}{4} & \tfrac14 & -\tfrac{\sqrt3}{2}\\
-\tfrac34 & -\tfrac{\sqrt3}{4} & -\tfrac12\\ -\tfrac12 & -\tfrac{\sqrt3}{2} & 0\end{bmatrix}.$$
-Find its yaw $\psi$, pitch $\theta$ and roll $\phi$ (intrinsic Z-Y-X:
-$R = R_z(\psi)R_y(\theta)R_x(\phi)$, pitch in $[-\pi/2, \pi/2]$), in radians. Give the
-3-vector $(\psi, \theta, \phi)$.
+A camera mount reports its orientation as the rotation matrix
+$$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
+\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\
+-\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
+Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
+$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and $\alpha, \gamma \in
+[-\pi, \pi]$. Multiply out the product for general angles, read the angles off the entries (as
+the chapter did for roll, pitch and yaw in §2) and give the 3-vector $(\alpha, \beta, \gamma)$
+in radians.
 """,
         answer=Value(shape=(3,), angle=True),
-        tip="The bottom row is (−sin θ, cos θ sin φ, cos θ cos φ); the first column starts "
-        "with cos θ cos ψ, cos θ sin ψ. Use atan2.",
+        tip="Write out R_z(α) R_y(β) R_z(γ) first (sympy helps). Look for the row and the "
+        "column in which only two of the three angles appear, and use atan2 with both of "
+        "its arguments, so that the signs pick the quadrant.",
         mistakes={
-            "reversed": "the order asked for is (yaw, pitch, roll), the order of the turns.",
-            "pitch_sign": "the entry r₃₁ is −sin θ: mind its sign.",
+            "reversed": "the order asked for is (α, β, γ), the order of the turns.",
+            "gamma_sign": "check the sign of the entry you use for cos γ: in the product it "
+            "comes with a minus sign.",
+            "negative_beta": "that triple rebuilds R too, but its β is negative; the "
+            "statement asks for β in [0, π].",
         },
     ),
     Exercise(
-        name="proper_euler_lock",
+        name="unreachable_omega",
         chapter=5,
         number=5,
         level="core",
-        title="Where proper Euler angles lock",
+        title="The angular velocity that angle rates cannot give",
         statement=r"""
-Take the intrinsic Z-X-Z angles $(\alpha, \beta, \gamma)$: $R = R_z(\alpha)R_x(\beta)R_z(\gamma)$.
-When they change at rates $(\dot\alpha, \dot\beta, \dot\gamma)$, the body's angular velocity in
-body coordinates is $\omega_b = E\,(\dot\alpha, \dot\beta, \dot\gamma)^T$, where each column of
-$E$ is the axis of one turn seen from the body (as for roll, pitch and yaw in the chapter).
-Compute $\det E$. Give a scalar expression in `alpha` and `beta` (it may not need both).
+A drone's yaw, pitch and roll (intrinsic Z-Y-X, as in the chapter) are yaw $0$, pitch $90°$ and
+roll $30°$. Whatever rates $(\dot\psi, \dot\theta, \dot\phi)$ its angles change at, its
+angular velocity in body coordinates is $\omega_b = E\,(\dot\psi, \dot\theta, \dot\phi)^T$, and
+at this orientation these $\omega_b$ do not fill space. Give the unit vector $n$, in body
+coordinates, that is orthogonal to every $\omega_b$ the rates can produce; of the two such
+unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
 """,
-        answer=Expr(shape=(), domain=(alpha, beta)),
-        tip="Each column is the axis of one turn in body coordinates, the last one e₃ "
-        "(turns about body axes: later turns act on earlier axes by their transposes).",
+        answer=Value(shape=(3,)),
+        tip="Build E column by column at this orientation (each column is the axis of one turn "
+        "in body coordinates, §3). Which columns span the same line? A vector orthogonal to "
+        "two independent vectors comes from their cross product.",
         mistakes={
-            "tait_bryan": "that is the determinant for roll, pitch and yaw; Z-X-Z turns about "
-            "z twice.",
+            "world_frame": "that vector is orthogonal to the turn axes written in world "
+            "coordinates; the exercise asks for body coordinates (each axis seen from the "
+            "body, through the transposes of the later turns).",
+            "no_transpose": "a later turn acts on an earlier turn's axis through its "
+            "transpose, R_x(φ)ᵀ, not R_x(φ): check the sign of the roll angle in your "
+            "columns.",
+            "parallel_columns": "the zero vector: two of the columns you crossed are "
+            "parallel at this pitch. Use two independent ones.",
+            "sign": "there are two unit normals; the statement picks the one with a positive "
+            "dot product with (1, 1, 1).",
         },
     ),
     Exercise(
-        name="slerp_third",
+        name="slerp_angular_velocity",
         chapter=5,
         number=6,
         level="challenge",
-        title="A third of the way",
+        title="How fast does slerp turn?",
         statement=r"""
-Let $q_0 = (1, 0, 0, 0)$ and let $q_1$ be the quaternion of the turn by $120°$ about $z$, with
-$w > 0$. Give $\operatorname{slerp}(q_0, q_1, \tfrac13)$, a 4-vector.
+A body moves from the orientation $q_0 = \big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)$
+to $q_1 = \big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},
+-\tfrac{\sqrt6}{4}\big)$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$ with the
+duration $T = 3$ s, taking the shorter way as the chapter's slerp does. Its angular velocity is
+constant. Give it in **world** coordinates, in rad/s: a 3-vector $\omega$ with
+$\dot R = \hat\omega R$.
 """,
-        answer=Value(shape=(4,)),
-        tip="slerp turns at constant speed about one axis: after t = 1/3 the body has turned "
-        "a third of 120°.",
+        answer=Value(shape=(3,)),
+        tip="slerp is chapter 4's geodesic (§7): one turn about a fixed axis at constant "
+        "speed. Which relative rotation is that turn, and in which frame is its axis "
+        "written? Then mind the time the move takes.",
         mistakes={
-            "nlerp": "that is the normalised linear average; slerp moves along the arc at "
-            "constant speed.",
-            "full_angle": "a quaternion holds half the angle of its turn.",
-            "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
+            "body_frame": "that is the angular velocity in body coordinates, the same vector "
+            "seen from the body; the exercise asks for world coordinates.",
+            "per_move": "that is the rotation vector of the whole move; the exercise asks "
+            "for a rate in rad/s: the move takes 3 s.",
+            "half_angle": "the quaternion of the relative turn holds half its angle: "
+            "cos(θ/2), not cos θ.",
+            "long_way": "that turns the long way round: q₀ · q₁ < 0, so −q₁ is the nearer "
+            "quaternion of the same orientation.",
         },
     ),
     Exercise(

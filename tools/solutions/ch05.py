@@ -12,28 +12,33 @@ answer_angle_from_ros = 2 * np.arctan2(z, w)""",
 q_x = quaternion.from_axis_angle([1, 0, 0], np.pi / 2)
 q_z = quaternion.from_axis_angle([0, 0, 1], np.pi / 2)
 answer_compose_quaternions = quaternion.multiply(q_z, q_x)  # world axes: from the left""",
-    "angles_of_matrix": """\
+    "proper_euler_angles": """\
 R = sp.Matrix(
     [
-        [-sp.sqrt(3) / 4, sp.Rational(1, 4), -sp.sqrt(3) / 2],
-        [sp.Rational(3, 4), -sp.sqrt(3) / 4, -sp.Rational(1, 2)],
-        [-sp.Rational(1, 2), -sp.sqrt(3) / 2, 0],
+        [sp.Rational(1, 2), sp.sqrt(3) / 2, 0],
+        [sp.sqrt(3) / 4, -sp.Rational(1, 4), -sp.sqrt(3) / 2],
+        [-sp.Rational(3, 4), sp.sqrt(3) / 4, -sp.Rational(1, 2)],
     ]
 )
-yaw = sp.atan2(R[1, 0], R[0, 0])
-pitch = sp.atan2(-R[2, 0], sp.sqrt(R[0, 0] ** 2 + R[1, 0] ** 2))
-roll = sp.atan2(R[2, 1], R[2, 2])
-answer_angles_of_matrix = [yaw, pitch, roll]  # (2π/3, π/6, −π/2)""",
-    "proper_euler_lock": """\
-gamma = sp.Symbol("gamma", real=True)
-Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(beta), -sp.sin(beta)], [0, sp.sin(beta), sp.cos(beta)]])
-Rz = sp.Matrix([[sp.cos(gamma), -sp.sin(gamma), 0], [sp.sin(gamma), sp.cos(gamma), 0], [0, 0, 1]])
-e1, e3 = sp.Matrix([1, 0, 0]), sp.Matrix([0, 0, 1])
-E = sp.Matrix.hstack(Rz.T * Rx.T * e3, Rz.T * e1, e3)
-answer_proper_euler_lock = sp.trigsimp(E.det())  # −sin β""",
-    "slerp_third": """\
-q1 = quaternion.from_axis_angle([0, 0, 1], 2 * np.pi / 3)
-answer_slerp_third = quaternion.slerp([1, 0, 0, 0], q1, 1 / 3)  # the turn by 40°""",
+# R_z(α) R_y(β) R_z(γ): third column (cα sβ, sα sβ, cβ), third row (−sβ cγ, sβ sγ, cβ)
+alpha = sp.atan2(R[1, 2], R[0, 2])
+beta = sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
+gamma = sp.atan2(R[2, 1], -R[2, 0])
+answer_proper_euler_angles = [alpha, beta, gamma]  # (−π/2, 2π/3, π/6)""",
+    "unreachable_omega": """\
+phi = sp.pi / 6  # roll 30°, pitch 90°, yaw 0
+Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
+Ry = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])  # R_y(90°)
+e_x, e_y, e_z = sp.eye(3)[:, 0], sp.eye(3)[:, 1], sp.eye(3)[:, 2]
+yaw_col, pitch_col, roll_col = Rx.T * Ry.T * e_z, Rx.T * e_y, e_x  # yaw_col = −roll_col
+n = roll_col.cross(pitch_col)
+answer_unreachable_omega = list(n / n.norm())  # (0, 1/2, √3/2)""",
+    "slerp_angular_velocity": """\
+q0 = np.array([np.sqrt(2) / 2, np.sqrt(2) / 2, 0, 0])
+q1 = np.array([-np.sqrt(2) / 4, -np.sqrt(2) / 4, -np.sqrt(6) / 4, -np.sqrt(6) / 4])
+R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
+T = 3.0
+answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world: (0, 0, 2π/9)""",
     "angle_between_quaternions": """\
 q0, q1 = np.array([0.6, 0.8, 0, 0]), np.array([-0.8, 0, 0, 0.6])
 answer_angle_between_quaternions = 2 * np.arccos(abs(q0 @ q1))""",
@@ -51,15 +56,23 @@ MISTAKES = {
         "order": "quaternion.multiply(q_x, q_z)",
         "negated": "-quaternion.multiply(q_z, q_x)",
     },
-    "angles_of_matrix": {
-        "reversed": "[roll, pitch, yaw]",
-        "pitch_sign": "[yaw, -pitch, roll]",
+    "proper_euler_angles": {
+        "reversed": "[gamma, beta, alpha]",
+        "gamma_sign": "[alpha, beta, sp.atan2(R[2, 1], R[2, 0])]",
+        "negative_beta": "[alpha + sp.pi, -beta, gamma - sp.pi]",
     },
-    "proper_euler_lock": {"tait_bryan": "-sp.cos(beta)"},
-    "slerp_third": {
-        "nlerp": "(lambda v: v / np.linalg.norm(v))(2 / 3 * np.array([1, 0, 0, 0]) + q1 / 3)",
-        "full_angle": "quaternion.from_axis_angle([0, 0, 1], 4 * np.pi / 9)",
-        "negated": "-quaternion.slerp([1, 0, 0, 0], q1, 1 / 3)",
+    "unreachable_omega": {
+        "world_frame": "[1, 0, 0]  # normal of e_z, R_z(0) e_y, R_y(90°) e_x",
+        "no_transpose": "list((lambda m: m / m.norm())(roll_col.cross(Rx * e_y)))",
+        "parallel_columns": "list(roll_col.cross(yaw_col))",
+        "sign": "list(-n / n.norm())",
+    },
+    "slerp_angular_velocity": {
+        "body_frame": "so3.log(R0.T @ R1) / T",
+        "per_move": "so3.log(R1 @ R0.T)",
+        "half_angle": "so3.log(R1 @ R0.T) / T / 2",
+        "long_way": "(lambda q: q[1:] / np.linalg.norm(q[1:]) * 2 * np.arccos(q[0]) / T)("
+        "quaternion.multiply(q1, quaternion.conjugate(q0)))",
     },
     "angle_between_quaternions": {"long_way": "2 * np.arccos(q0 @ q1)"},
 }

@@ -128,7 +128,8 @@ Give a 3x1 matrix expression.
         title="A product of two hat matrices",
         statement=r"""
 For vectors $x, y$, show that $\hat x \hat y + (x^T y)\, I$ is an outer product of two vectors:
-apply it to a vector $v$ and use $\hat x v = x \times v$ (Definition 5). Write it in terms of
+apply it to a vector $v$, use $\hat x v = x \times v$ (Definition 5) and the expansion of a
+double cross product (problem set 1, exercise 1.6). Write it in terms of
 `X` and `Y`, the 3x1 `MatrixSymbol`s standing for $x$ and $y$ (products and `.T`; no hat).
 Give a 3x3 matrix expression.
 """,

@@ -176,7 +176,7 @@ line, and how are $\theta$ and the angle between $u$ and $v$ related?
             "order": "the product is H(u) H(v), in this order: H(v) H(u) is its inverse, which "
             "turns the other way.",
             "long_way": "that vector is longer than π: its exponential is the right rotation, "
-            "but the asked θ lies in [0, π]; turn the other way round, about the opposite axis.",
+            "but the asked θ lies in [0, π]. Which other axis and angle give the same turn?",
             "single_angle": "the angle is not the angle between the two lines of the axes; find "
             "it from the trace of the product.",
             "unit_axis": "that is a unit vector; the rotation vector is ωθ, the axis times the "

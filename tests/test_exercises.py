@@ -585,17 +585,17 @@ def test_regression_no_method_of_a_foreign_class_is_called():
 @pytest.mark.parametrize("dtype", [np.float32, np.complex64])
 def test_a_correct_float32_answer_is_not_reported_as_wrong_entries(dtype):
     # issue 11: the right answer as float32 was told "components 1, 2 and 3 are wrong"
-    right = np.array([float(v) for v in reference("half_turn_axis")[1]])
-    result = check("half_turn_axis", right.astype(dtype))
+    right = np.array([float(v) for v in reference("axis_of_rotation")[1]])
+    result = check("axis_of_rotation", right.astype(dtype))
     assert not result.ok and result.status == "wrong", str(result)
     assert "single precision" in result.message and "float64" in result.message
     assert "wrong." not in result.message.split("Hint:")[0]
-    listed = check("half_turn_axis", [np.float32(v) for v in right])
+    listed = check("axis_of_rotation", [np.float32(v) for v in right])
     assert "single precision" in listed.message
-    assert check("half_turn_axis", right.astype(np.float64)).ok
-    wrong = check("half_turn_axis", (right + [0, 0, 1e-3]).astype(dtype))
+    assert check("axis_of_rotation", right.astype(np.float64)).ok
+    wrong = check("axis_of_rotation", (right + [0, 0, 1e-3]).astype(dtype))
     assert wrong.message.startswith(
-        "half_turn_axis: component 3 is wrong. Also, your answer is stored in single precision"
+        "axis_of_rotation: component 3 is wrong. Also, your answer is stored in single precision"
     ), str(wrong)
 
 

@@ -154,24 +154,35 @@ both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
         },
     ),
     Exercise(
-        name="half_turn_axis",
+        name="two_half_turns",
         chapter=4,
         number=8,
         level="challenge",
-        title="The axis of a half turn",
+        title="Two half turns",
         statement=r"""
-A half turn $R$ ($\theta = \pi$) has the first row $\frac{1}{49}(23,\ -24,\ 36)$; the other
-rows are not given. Since $R - R^T = 0$ for a half turn, the skew part says nothing about the
-axis. Use $R = I + 2\hat\omega^2 = 2\omega\omega^T - I$ to find the unit axis $\omega$, with its
-first component positive. Give a 3-vector.
+Write $H(a) = R(a, \pi)$ for the half turn about a unit axis $a$. Take
+$u = \frac13(1,\ 2,\ 2)$ and $v = \frac13(-2,\ 1,\ -2)$, and the rotation
+$R = H(u)\,H(v)$ (the half turn about $v$, then the one about $u$, both about fixed axes).
+Find its rotation vector (exponential coordinates) $r = \omega\theta$ with a unit axis
+$\omega$ and $\theta \in [0, \pi]$. Give a 3-vector.
+Then explain the result without multiplying matrices: which line do both half turns map onto
+itself, what does each half turn do in the plane through the origin perpendicular to that
+line, and how are $\theta$ and the angle between $u$ and $v$ related?
 """,
         answer=Value(shape=(3,)),
-        tip="(R + I)/2 = ωωᵀ: its first row is ω₁ ω; the entry (1,1) gives ω₁².",
+        tip="Build each half turn from the case θ = π of section 6. In the plane that holds "
+        "u and v, a half turn about a line of that plane acts like a mirror. Keep θ in [0, π].",
         mistakes={
-            "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by ω₁ > 0.",
-            "abs": "the signs of the components are not free: ωᵢωⱼ = (R + I)ᵢⱼ/2 fixes them "
-            "relative to each other.",
-            "row": "that is a row of (R + I)/2, which is ω₁ω, not ω: it is not a unit vector.",
+            "order": "the product is H(u) H(v), in this order: H(v) H(u) is its inverse, which "
+            "turns the other way.",
+            "long_way": "that vector is longer than π: its exponential is the right rotation, "
+            "but the asked θ lies in [0, π]. Which other axis and angle give the same turn?",
+            "single_angle": "the angle is not the angle between the two lines of the axes; find "
+            "it from the trace of the product.",
+            "unit_axis": "that is a unit vector; the rotation vector is ωθ, the axis times the "
+            "angle.",
+            "sum": "rotation vectors add only for turns about the same axis (section 7); u and "
+            "v are different axes.",
         },
     ),
 ]

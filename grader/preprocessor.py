@@ -22,6 +22,7 @@ from nbgrader.api import Gradebook, MissingEntry
 from nbgrader.preprocessors import Execute, NbGraderPreprocessor
 
 from course_lib.record import MIME
+from course_lib.student import nbgrader_metadata
 
 from .sandbox import ConfinedKernelManager
 from .verify import verdict
@@ -29,6 +30,7 @@ from .verify import verdict
 __all__ = ["ConfinedExecute", "VerifyRecords", "GuardCells", "note_output"]
 
 SUFFIX = "-check"
+ZERO = "rotations_course_zero"  # cell metadata: the note of a grade cell put back with 0
 
 
 def note_output(note):
@@ -60,7 +62,7 @@ class VerifyRecords(NbGraderPreprocessor):
         if not grade_id.endswith(SUFFIX):
             return cell, resources
         name = grade_id[: -len(SUFFIX)]
-        zero = cell.metadata.pop("rotations_course_zero", None)
+        zero = cell.metadata.pop(ZERO, None)
         if zero:
             cell.outputs = [note_output(zero)]
             return cell, resources
@@ -90,31 +92,32 @@ class GuardCells(NbGraderPreprocessor):
     def preprocess(self, nb, resources):
         notebook_id = resources["unique_key"]
         assignment_id = resources["nbgrader"]["assignment"]
-        db_url = resources["nbgrader"]["db_url"]
-        with Gradebook(db_url) as gb:
+        with Gradebook(resources["nbgrader"]["db_url"]) as gb:
             try:
                 source = gb.find_notebook(notebook_id, assignment_id)
             except MissingEntry:
                 return nb, resources
             released = {c.name: (c.cell_type, c.source) for c in source.source_cells}
-            grades = {g.name for g in source.grade_cells}
+            grades = {g.name: g.max_score for g in source.grade_cells}
         seen, cells = set(), []
         for cell in nb.cells:
-            meta = cell.get("metadata", {}).get("nbgrader", {})
-            gid = meta.get("grade_id")
-            if gid in grades:
-                if gid in seen:
-                    self.log.warning("%s: grade cell %s duplicated: copy dropped", notebook_id, gid)
-                    cells[_index(cells, gid)] = _zero(cell, released[gid], gid, "duplicated")
-                    continue
-                seen.add(gid)
-                if gid in released and cell.cell_type != released[gid][0]:
-                    self.log.warning("%s: grade cell %s retyped", notebook_id, gid)
-                    cell = _zero(cell, released[gid], gid, "its type was changed")
+            gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
+            if gid not in grades or gid not in released:
+                cells.append(cell)
+                continue
+            if gid in seen:
+                self.log.warning("%s: grade cell %s duplicated", notebook_id, gid)
+                cells[_index(cells, gid)] = _zero(released[gid], gid, grades[gid], "was duplicated")
+                continue
+            seen.add(gid)
+            if cell.cell_type != released[gid][0]:
+                self.log.warning("%s: grade cell %s retyped", notebook_id, gid)
+                cell = _zero(released[gid], gid, grades[gid], "was changed to another type")
             cells.append(cell)
-        for gid in sorted(grades - seen):
-            self.log.warning("%s: grade cell %s deleted: put back with 0 points", notebook_id, gid)
-            cells.append(_zero(None, released.get(gid, ("code", "")), gid, "deleted"))
+        for gid in sorted(set(grades) - seen):
+            if gid in released:
+                self.log.warning("%s: grade cell %s deleted: put back with 0", notebook_id, gid)
+                cells.append(_zero(released[gid], gid, grades[gid], "was deleted"))
         nb.cells = cells
         return nb, resources
 
@@ -127,12 +130,11 @@ def _index(cells, gid):
     )
 
 
-def _zero(cell, released, gid, what):
+def _zero(released, gid, points, what):
     """The released grade cell, marked so that it keeps 0 points with a note."""
     kind, source = released
     new = (nbformat.v4.new_code_cell if kind == "code" else nbformat.v4.new_markdown_cell)(source)
-    meta = dict(cell.metadata.get("nbgrader", {})) if cell is not None else {}
-    meta.update({"grade_id": gid, "grade": True})
-    new.metadata["nbgrader"] = meta
-    new.metadata["rotations_course_zero"] = f"{gid}: 0 points: the grade cell was {what}."
+    new.metadata = nbgrader_metadata(gid, grade=True, locked=True, points=points)
+    new.id = gid
+    new.metadata[ZERO] = f"{gid}: 0 points: the grade cell {what} in the submission."
     return new

@@ -8,7 +8,7 @@ Debian's ``bubblewrap`` (``bwrap``):
   ``HOME``) and a private ``/dev``;
 - the instructor's folders (:attr:`ConfinedKernelManager.hide`: the course directory with
   ``source/``, ``release/``, ``submitted/``, ``autograded/`` and ``gradebook.db``, and the
-  repository with ``tools/solutions``) are covered by empty tmpfs; only the installed
+  repository with ``tools/solutions``) are covered by empty, read-only tmpfs; only the installed
   ``course_lib`` and the Python environment are mounted back, read-only;
 - the kernel runs in new PID, IPC and UTS namespaces (``--unshare-pid``), with every
   capability dropped (so even as root it cannot unmount what covers the instructor's folders),
@@ -52,6 +52,8 @@ def bwrap_command(hide, expose, connection_fd, kernel_args, python=sys.executabl
         cmd += ["--tmpfs", folder]
     for folder in expose:
         cmd += ["--ro-bind", folder, folder]
+    for folder in hide:  # empty and read-only (after the mount points above were made)
+        cmd += ["--remount-ro", folder]
     cmd += ["--dir", SCRATCH, "--chdir", SCRATCH, "--file", str(connection_fd), "/tmp/kernel.json"]
     cmd += ["--unshare-pid", "--unshare-ipc", "--unshare-uts", "--die-with-parent"]
     cmd += ["--new-session", "--cap-drop", "ALL"]

@@ -67,7 +67,7 @@ def _check_source(ex):
     return (
         "from course_lib.record import record\n\n"
         f'result = check("{ex.name}", {ex.answer_variable})\n'
-        f'record("{ex.name}", {ex.answer_variable}, result)  # ✓, or stops with the hint\n'
+        f'record("{ex.name}", {ex.answer_variable}, result)\n'
         "assert result.ok, result.message"
     )
 

@@ -39,6 +39,7 @@ __all__ = ["problem_sets", "config_text", "write_course", "hidden_folders"]
 
 KERNELSPEC = {"name": "python3", "display_name": "Python 3 (ipykernel)", "language": "python"}
 TIMEOUT = 60
+RECORD = "record("  # what every check cell calls (course_lib.record)
 
 CONFIG = """\
 # The course's nbgrader configuration, written by `make course` (grader/course.py).
@@ -153,8 +154,17 @@ def write_course(course, root=ROOT):
         raise ValueError(f"COURSE must be outside the repository, got {course}")
     course.mkdir(parents=True, exist_ok=True)
     (course / "nbgrader_config.py").write_text(config_text(course, root))
-    names = []
-    for (assignment, filename), nb in problem_sets(root).items():
+    names, sets = [], problem_sets(root)
+    for (_, filename), nb in sets.items():
+        stale = [
+            c.id for c in nb.cells if c.get("id", "").endswith("-check") and RECORD not in c.source
+        ]
+        if stale:
+            raise ValueError(
+                f"{filename}: the check cells {', '.join(stale[:3])}... record no answer for the "
+                "grader (an older check cell): regenerate the problem sets (make exercises)"
+            )
+    for (assignment, filename), nb in sets.items():
         folder = course / "source" / assignment
         folder.mkdir(parents=True, exist_ok=True)
         nbformat.write(nb, folder / filename)

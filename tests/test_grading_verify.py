@@ -171,3 +171,28 @@ def test_the_confined_kernel_command_hides_the_instructors_folders_and_drops_pri
     python = cmd.index("--") + 1
     assert cmd[python + 1] == "-P" and "import course_lib" in cmd[python + 3]
     assert cmd[-1] == "--x"
+
+
+def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_check_cells(
+    tmp_path,
+):
+    from grader import course
+
+    names = course.write_course(tmp_path / "c")
+    assert names == ["ps01", "ps02", "ps03", "ps04"]
+    config = (tmp_path / "c" / "nbgrader_config.py").read_text()
+    for word in ("ConfinedExecute", "VerifyRecords", "GuardCells", "ConfinedKernelManager.hide"):
+        assert word in config
+    compile(config, "nbgrader_config.py", "exec")
+    assert str((tmp_path / "c").resolve()) in config and str(ROOT) in config
+    fake = tmp_path / "repo"
+    (fake / "problem_sets").mkdir(parents=True)
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("assert check('x', 1)")])
+    nb.cells[0].id = "x-check"
+    nbformat.write(nb, fake / "problem_sets" / "ps01_x.ipynb")
+    with pytest.raises(ValueError, match="regenerate the problem sets"):
+        course.write_course(tmp_path / "d", root=fake)
+    with pytest.raises(ValueError, match="outside the repository"):
+        course.write_course(ROOT / "build" / "course")

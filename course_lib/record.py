@@ -78,16 +78,17 @@ def answer_record(name, answer):
 def record(name, answer, result):
     """Show the verdict of the student's check and leave the answer's record for the grader.
 
-    Displays one ``display_data`` output holding the record (:data:`MIME`) and, when the
-    check passed, the line ``✓ name: correct.``; when it did not, raises :class:`CheckFailed`
+    Displays one ``display_data`` output holding the record (:data:`MIME`) and, as its
+    ``text/plain``, the line ``✓ name: correct.`` when the check passed (else nothing); when
+    it did not pass, raises :class:`CheckFailed`
     with the whole hint on one line. Never returns a value (a check cell has no
     ``execute_result``).
     """
     from IPython.display import display  # only in a kernel
 
-    data = {MIME: answer_record(name, answer)}
-    if result.ok:
-        data["text/plain"] = str(result)
+    # text/plain always: JupyterLab prints "No renderer could be found" for a bundle without
+    # one; a failed check shows nothing here, its hint is the error line below.
+    data = {MIME: answer_record(name, answer), "text/plain": str(result) if result.ok else ""}
     display(data, raw=True)
     if not result.ok:
         raise CheckFailed(f"✗ {result.message}")

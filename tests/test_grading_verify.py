@@ -196,3 +196,27 @@ def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_c
         course.write_course(tmp_path / "d", root=fake)
     with pytest.raises(ValueError, match="outside the repository"):
         course.write_course(ROOT / "build" / "course")
+
+
+def test_record_shows_the_verdict_leaves_one_record_and_a_wrong_answer_stops_with_the_hint(
+    monkeypatch,
+):
+    import IPython.display
+
+    from course_lib.exercises import W
+    from course_lib.record import record
+
+    shown = []
+    monkeypatch.setattr(IPython.display, "display", lambda data, raw: shown.append((data, raw)))
+    right = _namespace("hat_fifth")["answer_hat_fifth"]
+    assert record("hat_fifth", right, check("hat_fifth", right)) is None
+    ((data, raw),) = shown
+    assert raw and data["text/plain"] == "✓ hat_fifth: correct."
+    assert verify.verdict("hat_fifth", data[MIME]).ok
+    shown.clear()
+    with pytest.raises(CheckFailed, match="^✗ hat_fifth: your answer is the negative"):
+        record("hat_fifth", -right, check("hat_fifth", -right))
+    ((data, raw),) = shown
+    assert data["text/plain"] == "" and data[MIME]["kind"] == "matrix"
+    assert verify.verdict("hat_fifth", data[MIME]).status == "wrong"
+    assert W in parse(data[MIME]["answer"]).free_symbols

@@ -107,3 +107,16 @@ hub-load: $(HUB_STAMP) $(CHP_STAMP)
 
 clean:
 	rm -rf $(VENV) build
+
+# An nbgrader course directory for the problem sets (docs/grading.md): nbgrader_config.py with
+# the confined kernel and the grader's preprocessors, and source/psNN/ for every problem set.
+.PHONY: course bench-grade
+COURSE ?=
+course: $(STAMP)
+	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR"; exit 2; }
+	$(BIN)/python -m grader.course $(COURSE)
+
+# A class of 20 simulated students through `make course` and real nbgrader: autograde time
+# per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
+bench-grade: $(STAMP)
+	$(BIN)/python benchmarks/bench_grade.py --students 20 --jobs 2

@@ -130,10 +130,14 @@ def _solution_source(ex, code):
 
 
 def _check_source(ex):
+    """The check cell: the student's check for feedback, and the answer's record for the
+    grader (course_lib.record), which decides the points outside the student's kernel. No
+    last-line value: nbgrader would read an execute_result as a partial score."""
     return (
+        "from course_lib.record import record\n\n"
         f'result = check("{ex.name}", {ex.answer_variable})\n'
-        "assert result.ok, result.message\n"
-        "result"
+        f'record("{ex.name}", {ex.answer_variable}, result)\n'
+        "assert result.ok, result.message"
     )
 
 

@@ -97,7 +97,10 @@ def test_a_chapter_alone_runs_as_in_colab(release, colab_kernel, tmp_path):
     student, wheel = release
     python, jupyter_path = colab_kernel
     chapter = student / "notebooks" / CHAPTER
-    installed = subprocess.run([python, "-c", "import course_lib"], capture_output=True)
+    clean_env = {**os.environ, "PYTHONPATH": ""}
+    installed = subprocess.run(
+        [python, "-c", "import course_lib"], capture_output=True, env=clean_env
+    )
     assert installed.returncode != 0, "the fresh venv must not have the course yet"
 
     # 1. No address yet: one plain message from the setup cell, and no README to look for.

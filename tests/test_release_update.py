@@ -1,10 +1,11 @@
 """A mid-term release reaching a hub student who already edited a chapter (nbgitpuller 1.3.0).
 
 The student edition (release/student_edition.py) is the "public repository"; a student's home
-gets it with nbgitpuller's own puller (what the hub link runs), solves an exercise and re-runs
-the chapter (new execution counts all through the file). Then the course releases a correction:
-a sentence in that same chapter, a sentence in another chapter, and a change to the very lines
-the student edited. The student clicks the link again. What happens (docs/release.md says it):
+gets it with nbgitpuller's own puller (what the hub link runs), solves an exercise of problem
+set 1 and re-runs it (new execution counts all through the file). Then the course releases a
+correction: a sentence in that same problem set, a sentence in chapter 02, and a change to the
+very lines the student edited. The student clicks the link again. What happens
+(docs/release.md says it):
 
 * nbgitpuller commits the student's work and merges the release with ``git merge -Xours``:
   line by line, so the correction of the untouched chapter arrives, and so does the correction
@@ -29,7 +30,17 @@ import student_edition  # noqa: E402
 
 assert importlib.util.find_spec("nbgitpuller"), "nbgitpuller is pinned in environment.txt"
 
-CH1, CH2 = "notebooks/01_rigid_body_motion.ipynb", "notebooks/02_rotations.ipynb"
+# a problem set (the student's work), and a chapter the student only read; the exercises were
+# at the end of the chapters before the problem sets had notebooks of their own
+PS1 = next(
+    f"{folder}/{name}"
+    for folder, name in [
+        ("problem_sets", "ps01_rigid_body_motion.ipynb"),
+        ("notebooks", "01_rigid_body_motion.ipynb"),
+    ]
+    if (ROOT / folder / name).is_file()
+)
+CH2 = "notebooks/02_rotations.ipynb"
 
 
 PULL = (
@@ -62,8 +73,9 @@ def _stub_index(nb):
 
 def _student_solves_and_reruns(nb):
     i = _stub_index(nb)
-    lines = nb.cells[i].source.splitlines()
-    nb.cells[i].source = "\n".join(lines[:1] + ["answer_coords_by_projection = [1, 2, 3]  # MINE"])
+    prefill = nb.cells[i].source.splitlines()[0]  # answer_x = None
+    assert prefill.endswith(" = None"), prefill
+    nb.cells[i].source = prefill + "\n" + prefill.replace("None", "[1, 2, 3]  # MINE")
     for cell in nb.cells:
         if cell.cell_type == "code" and cell.execution_count:
             cell.execution_count += 100
@@ -99,7 +111,7 @@ def _release(upstream, *changes):
 
 def test_a_mid_term_release_merges_into_a_students_edited_chapter(hub):
     upstream, home = hub
-    _edit(home / CH1, _student_solves_and_reruns)
+    _edit(home / PS1, _student_solves_and_reruns)
 
     def upstream_edits_the_students_lines(nb):
         i = _stub_index(nb)
@@ -107,18 +119,18 @@ def test_a_mid_term_release_merges_into_a_students_edited_chapter(hub):
 
     _release(
         upstream,
-        (CH1, _add_sentence(_markdown(3), "RELEASE 2 FIXES CHAPTER 1.")),
+        (PS1, _add_sentence(_markdown(-1), "RELEASE 2 FIXES PROBLEM SET 1.")),
         (CH2, _add_sentence(_markdown(2), "RELEASE 2 FIXES CHAPTER 2.")),
-        (CH1, upstream_edits_the_students_lines),
+        (PS1, upstream_edits_the_students_lines),
     )
     log = _pull(upstream, home)
     assert "Automatic commit by nbgitpuller" in log and "merge -Xours" in log
 
-    merged = nbformat.read(home / CH1, as_version=4)
+    merged = nbformat.read(home / PS1, as_version=4)
     nbformat.validate(merged)  # still a notebook
-    text = (home / CH1).read_text()
-    assert "answer_coords_by_projection = [1, 2, 3]  # MINE" in text  # the student's work stays
-    assert "RELEASE 2 FIXES CHAPTER 1." in text  # a correction elsewhere in it arrives
+    text = (home / PS1).read_text()
+    assert " = [1, 2, 3]  # MINE" in text  # the student's work stays
+    assert "RELEASE 2 FIXES PROBLEM SET 1." in text  # a correction elsewhere in it arrives
     assert "# RELEASE 2" not in text  # the release's change to the student's lines: dropped
     assert "RELEASE 2 FIXES CHAPTER 2." in (home / CH2).read_text()
 

@@ -1,4 +1,7 @@
-"""A chapter on its own, the way Colab runs it (``pytest -m colab``; about 2 minutes).
+"""A chapter on its own, the way Colab runs it (CI: ``pytest release/test_colab.py``).
+
+Outside ``make test`` (it builds a venv from PyPI: 3 to 6 minutes on a loaded 2-core machine),
+like site/test_site.py; marked ``colab``.
 
 A fresh virtualenv holds only what Colab has by default for the course's purposes (numpy, sympy,
 matplotlib, ipykernel, ipywidgets, at the student environment's pins) and is a Jupyter kernel of
@@ -99,7 +102,7 @@ def test_a_chapter_alone_runs_as_in_colab(release, colab_kernel, tmp_path):
     chapter = student / "notebooks" / CHAPTER
     clean_env = {**os.environ, "PYTHONPATH": ""}
     installed = subprocess.run(
-        [python, "-c", "import course_lib"], capture_output=True, env=clean_env
+        [python, "-c", "import course_lib"], capture_output=True, env=clean_env, cwd=tmp_path
     )
     assert installed.returncode != 0, "the fresh venv must not have the course yet"
 

@@ -6,7 +6,7 @@ VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.course-installed
 
-.PHONY: lab test e2e student bench lint clean test-fast notebooks site site-test
+.PHONY: lab test e2e student bench lint clean test-fast notebooks exercises site site-test
 
 $(STAMP): environment.txt pyproject.toml
 	rm -rf $(VENV)
@@ -32,11 +32,19 @@ test: $(STAMP)
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -m "not notebook_exec" -q
 
-# Put the setup cell first, execute and clean every chapter (idempotent: a re-run changes
-# nothing), then refresh the README's launch links from pyproject.toml.
+# Put the setup cell first, execute and clean every chapter and problem set (idempotent: a
+# re-run changes nothing), then refresh the README's launch links from pyproject.toml.
 notebooks: $(STAMP)
-	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb
+	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb problem_sets/ps*.ipynb
 	$(BIN)/python tools/course_links.py --readme
+
+# After editing an exercise (its bank entry, its solution in tools/solutions): the checker's
+# fingerprints, the problem sets (hidden tests and hand-made cells kept) and the chapters'
+# pointers, then the problem sets executed. One command; a re-run changes nothing.
+exercises: $(STAMP)
+	$(BIN)/python tools/exercise_fingerprints.py
+	$(BIN)/python tools/sync_exercises.py
+	$(BIN)/python tools/notebooks.py --apply problem_sets/ps*.ipynb
 
 # The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
 # build/site-instructor/ with a banner on every page (never over the student site). Its tools
@@ -81,7 +89,7 @@ bench: $(STAMP)
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
 # and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
-LINT_PATHS := course_lib tests benchmarks e2e tools notebooks
+LINT_PATHS := course_lib tests benchmarks e2e tools notebooks problem_sets
 lint: $(STAMP)
 	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
 	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))

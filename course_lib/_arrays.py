@@ -5,22 +5,32 @@ passes a string, a ragged list, a masked array, a matrix of the wrong size, a nu
 for float64 or a NaN gets the same kind of message everywhere: the argument's name, what was
 wrong and what was expected.
 
-==========================  ===================================================================
-helper                      returns
-==========================  ===================================================================
-:func:`as_float_array`      any shape, float64 (no finiteness check)
-:func:`as_scalar`           one finite real number, as a Python float
-:func:`as_vector3`          one finite 3-vector, shape (3,)
-:func:`as_vectors`          finite 3-vectors, shape (..., 3)
-:func:`as_direction`        one non-zero 3-vector, normalised (overflow-safe)
-:func:`as_unit_axes`        unit 3-vectors within ``tol``, shape (..., 3)
-:func:`as_matrices`         finite n x n matrices, shape (..., n, n)
-:func:`as_square_matrices`  finite square matrices of any size, shape (..., n, n)
-:func:`as_angles`           finite angles of any shape
-:func:`as_count`            a Python int >= a minimum
-:func:`broadcast_batch`     the common batch shape of several arguments, or a ValueError
-                            naming each argument and its shape
-==========================  ===================================================================
+============================  ===================================================================
+helper                        returns
+============================  ===================================================================
+:func:`as_float_array`        any shape, float64 (no finiteness check)
+:func:`as_finite_array`       any shape, float64, finite
+:func:`as_scalar`             one finite real number, as a Python float
+:func:`as_positive`           one finite real number > 0, as a Python float
+:func:`as_vector`             one finite n-vector, shape (n,)
+:func:`as_vector3`            one finite 3-vector, shape (3,)
+:func:`as_vectors`            finite 3-vectors, shape (..., 3)
+:func:`as_points`             one or more finite points of dimension d, shape (k, d)
+:func:`as_matrix`             one finite n x n matrix, shape (n, n)
+:func:`as_direction`          one non-zero 3-vector, normalised (overflow-safe)
+:func:`as_unit_axes`          unit 3-vectors within ``tol``, shape (..., 3)
+:func:`as_quaternions`        finite quaternions (w, x, y, z), shape (..., 4)
+:func:`as_unit_quaternions`   unit quaternions within ``tol``, shape (..., 4)
+:func:`as_matrices`           finite n x n matrices, shape (..., n, n)
+:func:`as_square_matrices`    finite square matrices of any size, shape (..., n, n)
+:func:`as_angles`             finite angles of any shape
+:func:`as_count`              a Python int >= a minimum
+:func:`as_str`                a str (labels, titles)
+:func:`as_labels`             one str or None per item, as a list
+:func:`as_choice`             one of a few named options (a str)
+:func:`broadcast_batch`       the common batch shape of several arguments, or a ValueError
+                              naming each argument and its shape
+============================  ===================================================================
 
 Examples
 --------
@@ -138,7 +148,23 @@ def as_scalar(x, name):
         raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
     value = float(arr)
     if not np.isfinite(value):
-        raise ValueError(f"{name} must be a finite real number, got {value!r}")
+        raise ValueError(f"{name} must be a finite real number, not NaN or infinity; got {value!r}")
+    return value
+
+
+def as_positive(x, name):
+    """One finite real number > 0, as a Python float (a length, a size, a scale).
+
+    >>> as_positive(2, "r")
+    2.0
+    >>> as_positive(0, "r")
+    Traceback (most recent call last):
+    ...
+    ValueError: r must be > 0, got 0.0
+    """
+    value = as_scalar(x, name)
+    if not value > 0:
+        raise ValueError(f"{name} must be > 0, got {value!r}")
     return value
 
 
@@ -150,12 +176,50 @@ def as_vectors(x, name="w"):
     return require_finite(arr, name)
 
 
+def as_vector(x, name, n=3):
+    """One finite n-vector: a float64 array of shape (n,) (a 2-vector for a planar figure).
+
+    >>> as_vector([1, 2], "v", 2)
+    array([1., 2.])
+    >>> as_vector([1, 2, 3], "v", 2)
+    Traceback (most recent call last):
+    ...
+    ValueError: v must be one 2-vector of shape (2,), got shape (3,)
+    """
+    arr = as_float_array(x, name)
+    if arr.shape != (n,):
+        raise ValueError(f"{name} must be one {n}-vector of shape ({n},), got shape {arr.shape}")
+    return require_finite(arr, name)
+
+
 def as_vector3(x, name="w"):
     """One finite 3-vector: a float64 array of shape (3,)."""
+    return as_vector(x, name, 3)
+
+
+def as_points(x, name="p", d=3, min_count=1):
+    """One point of shape (d,) or n points of shape (n, d), finite, returned as (n, d).
+
+    >>> as_points([1, 2], "p", 2)
+    array([[1., 2.]])
+    >>> as_points([[0, 0, 0]], "points", 3, min_count=2)
+    Traceback (most recent call last):
+    ...
+    ValueError: points must hold at least 2 points, got 1
+    """
     arr = as_float_array(x, name)
-    if arr.shape != (3,):
-        raise ValueError(f"{name} must be one 3-vector of shape (3,), got shape {arr.shape}")
-    return require_finite(arr, name)
+    shape = arr.shape
+    if arr.ndim == 1:
+        arr = arr[None, :]
+    if arr.ndim != 2 or arr.shape[1] != d:
+        raise ValueError(
+            f"{name} must have shape ({d},) or (n, {d}) (one point or n points in {d}D), "
+            f"got shape {shape}"
+        )
+    require_finite(arr, name)
+    if arr.shape[0] < min_count:
+        raise ValueError(f"{name} must hold at least {min_count} points, got {arr.shape[0]}")
+    return arr
 
 
 def vector_norm(v):
@@ -207,15 +271,45 @@ def as_unit_axes(x, name="w", tol=TOL, hint="divide it by its norm"):
 
     The message names the worst norm and its batch index, and ends with ``hint``.
     """
-    w = as_vectors(x, name)
-    tol = check_tol(tol)
+    return _require_unit(as_vectors(x, name), name, check_tol(tol), "a unit vector", hint)
+
+
+def as_quaternions(x, name="q"):
+    """A finite float64 array of shape (..., 4): quaternions, scalar first (w, x, y, z)."""
+    arr = as_float_array(x, name)
+    if arr.ndim == 0 or arr.shape[-1] != 4:
+        raise ValueError(
+            f"{name} must have shape (..., 4) (quaternions (w, x, y, z), scalar first), "
+            f"got shape {arr.shape}"
+        )
+    return require_finite(arr, name)
+
+
+def as_unit_quaternions(x, name="q", tol=TOL):
+    r"""Unit quaternions, :math:`|\|q\| - 1| \le` tol, as a float64 array of shape (..., 4).
+
+    >>> as_unit_quaternions([1, 0, 0, 0], "q")
+    array([1., 0., 0., 0.])
+    >>> as_unit_quaternions([1, 1, 0, 0], "q")
+    Traceback (most recent call last):
+    ...
+    ValueError: q must be a unit quaternion: ‖q‖ = 1.41421, |‖q‖ − 1| = 4.1e-01 > TOL = 1e-09;
+    divide it by its norm (a rotation is a quaternion of norm 1)
+    """
+    hint = "divide it by its norm (a rotation is a quaternion of norm 1)"
+    return _require_unit(as_quaternions(x, name), name, check_tol(tol), "a unit quaternion", hint)
+
+
+def _require_unit(w, name, tol, what, hint):
+    """w itself if every row along the last axis has norm 1 within tol, else a ValueError that
+    names the worst norm and its batch index, and ends with ``hint``."""
     norm = vector_norm(w)
     off = np.abs(norm - 1.0)
     if not np.all(off <= tol):
         worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
         where = f" at batch index {tuple(int(i) for i in worst)}" if worst else ""
         raise ValueError(
-            f"{name} must be a unit vector: ‖{name}‖ = {float(norm[worst]):.6g}, |‖{name}‖ − 1| = "
+            f"{name} must be {what}: ‖{name}‖ = {float(norm[worst]):.6g}, |‖{name}‖ − 1| = "
             f"{fmt_residual(float(off[worst]), tol)} > {tol_label(tol)}{where}; {hint}"
         )
     return w
@@ -231,6 +325,22 @@ def as_matrices(x, name="R", n=3, finite=True):
     return require_finite(arr, name) if finite else arr
 
 
+def as_matrix(x, name="R", n=3):
+    """One finite n x n matrix: a float64 array of shape (n, n).
+
+    >>> as_matrix(np.eye(2), "R", 3)
+    Traceback (most recent call last):
+    ...
+    ValueError: R must be one 3x3 matrix of shape (3, 3), got shape (2, 2)
+    """
+    arr = as_float_array(x, name)
+    if arr.shape != (n, n):
+        raise ValueError(
+            f"{name} must be one {n}x{n} matrix of shape ({n}, {n}), got shape {arr.shape}"
+        )
+    return require_finite(arr, name)
+
+
 def as_square_matrices(x, name="A"):
     """A finite float64 array of shape (..., n, n) for any n >= 1."""
     arr = as_float_array(x, name)
@@ -239,9 +349,14 @@ def as_square_matrices(x, name="A"):
     return require_finite(arr, name)
 
 
+def as_finite_array(x, name):
+    """A finite float64 array of any shape."""
+    return require_finite(as_float_array(x, name), name)
+
+
 def as_angles(x, name="theta"):
     """A finite float64 array of any shape (angles in radians)."""
-    return require_finite(as_float_array(x, name), name)
+    return as_finite_array(x, name)
 
 
 def as_count(n, name="n", minimum=0, maximum=None):
@@ -253,6 +368,63 @@ def as_count(n, name="n", minimum=0, maximum=None):
     if maximum is not None and n > maximum:
         raise ValueError(f"{name} must be <= {maximum}, got {n}")
     return int(n)
+
+
+def as_str(x, name):
+    """``x`` itself if it is a str (a title, a label), else a TypeError naming ``name``.
+
+    >>> as_str(3, "title")
+    Traceback (most recent call last):
+    ...
+    TypeError: title must be a str, got int
+    """
+    if not isinstance(x, str):
+        raise TypeError(f"{name} must be a str, got {type(x).__name__}")
+    return x
+
+
+def as_labels(labels, n, name="labels"):
+    """One label (str or None) per item, as a list of length ``n``; ``None`` gives no labels.
+
+    A single str is one label.
+
+    >>> as_labels("$p$", 1), as_labels(None, 2)
+    (['$p$'], [None, None])
+    >>> as_labels(["$p$"], 2)
+    Traceback (most recent call last):
+    ...
+    ValueError: labels must hold one label per item: expected 2, got 1
+    """
+    if labels is None:
+        return [None] * n
+    if isinstance(labels, str):
+        labels = [labels]
+    labels = list(labels)
+    if len(labels) != n:
+        raise ValueError(f"{name} must hold one label per item: expected {n}, got {len(labels)}")
+    for lab in labels:
+        if lab is not None and not isinstance(lab, str):
+            raise TypeError(f"each of {name} must be a str or None, got {type(lab).__name__}")
+    return labels
+
+
+def as_choice(x, name, choices):
+    """``x`` if it is one of the str ``choices``, else a ValueError listing them.
+
+    >>> as_choice("2d", "kind", ("3d", "2d"))
+    '2d'
+    >>> as_choice("wavy", "style", ("solid", "dashed", "dotted"))
+    Traceback (most recent call last):
+    ...
+    ValueError: style must be one of ['dashed', 'dotted', 'solid'], got 'wavy'
+    """
+    if not isinstance(x, str) or x not in choices:
+        if len(choices) == 2:
+            allowed = " or ".join(repr(c) for c in choices)
+        else:
+            allowed = f"one of {sorted(choices)}"
+        raise ValueError(f"{name} must be {allowed}, got {x!r}")
+    return x
 
 
 def broadcast_batch(*named):

@@ -44,3 +44,21 @@ def screen_box():
     """Display box of a 3D label where it is drawn (Text3D projects its position only while it
     draws itself, so its 2D position is moved there for the measurement and put back)."""
     return _screen_box
+
+
+@pytest.fixture(scope="module")
+def ax3():
+    """One 3D axes shared by the property tests of a module (a figure per example is slow)."""
+    from course_lib.plotting import axes3d
+
+    fig, ax = axes3d("shared 3D axes")
+    yield ax
+
+
+@pytest.fixture(scope="module")
+def ax2():
+    """One 2D axes shared by the property tests."""
+    from course_lib.plotting import axes2d
+
+    fig, ax = axes2d("shared 2D axes")
+    yield ax

@@ -1,8 +1,9 @@
-"""Tests of tools/sync_exercises.py: the notebooks' exercise sections come from the bank.
+"""Tests of tools/sync_exercises.py: problem sets come from the bank; chapters point to them.
 
-The real notebooks' sections are exactly what the tool writes (each statement is written once,
-in the bank), the tool is idempotent, and the cells carry the nbgrader metadata autograde
-needs. Chapter 4's section is built on a stub notebook and its cells are run in order.
+The committed problem sets are exactly what the tool writes (each statement is written once, in
+the bank), the tool is idempotent, the cells carry the nbgrader metadata autograde needs, the
+chapters hold no exercise, and what an instructor adds by hand (hidden tests, cells of their
+own, a solution edited in the notebook) is never lost.
 """
 
 import copy
@@ -18,47 +19,62 @@ sys.path.insert(0, str(ROOT))
 from course_lib.exercises import exercises  # noqa: E402
 from tools import sync_exercises as sync  # noqa: E402
 
-NOTEBOOKS = sorted((ROOT / "notebooks").glob("0[1-9]_*.ipynb"))
+CHAPTERS = [1, 2, 3, 4]
 MARKER_WORDS = ("BEGIN SOLUTION", "END SOLUTION", "HIDDEN TESTS")
+HIDDEN = (
+    "### BEGIN HIDDEN TESTS\nassert answer_coords_by_projection is not None\n### END HIDDEN TESTS"
+)
 
 
-def section(nb):
-    start = next(
-        i
-        for i, c in enumerate(nb.cells)
-        if c.cell_type == "markdown" and c.source.lstrip().startswith("## Exercises")
-    )
-    return nb.cells[start:]
+def _fresh(chapter):
+    return sync.sync_problem_set(None, chapter)
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
-def test_real_notebook_section_is_what_the_bank_writes(path):
+def _writes(nb):
+    return nbformat.writes(nb)
+
+
+@pytest.mark.parametrize("chapter", CHAPTERS)
+def test_committed_problem_set_is_what_the_bank_writes(chapter):
+    path = sync.problem_set_path(chapter)
     nb = nbformat.read(path, as_version=4)
-    again = sync.sync(copy.deepcopy(nb), sync.chapter_of(path))
-    assert nbformat.writes(again) == nbformat.writes(nb)  # idempotent, up to date
-    for ex in exercises(sync.chapter_of(path)):
-        sources = [c.source for c in section(nb)]
+    again = sync.sync_problem_set(copy.deepcopy(nb), chapter, path)
+    assert _writes(again) == _writes(nb)  # idempotent, up to date
+    sources = [c.source for c in nb.cells]
+    for ex in exercises(chapter):
         assert ex.markdown() in sources
 
 
-def test_stub_notebook_gets_the_section_appended_and_a_second_run_changes_nothing():
-    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("# Chapter 4")])
-    once = sync.sync(copy.deepcopy(nb), 4)
-    twice = sync.sync(copy.deepcopy(once), 4)
-    assert nbformat.writes(once) == nbformat.writes(twice)
-    assert once.cells[0].source == "# Chapter 4"
-    assert len(once.cells) == 1 + 2 + 3 * len(exercises(4))
+@pytest.mark.parametrize("chapter", CHAPTERS)
+def test_chapter_holds_no_exercise_and_ends_with_a_pointer_that_resolves(chapter):
+    path = sync.chapter_notebook(chapter)
+    nb = nbformat.read(path, as_version=4)
+    assert _writes(sync.sync_chapter(copy.deepcopy(nb), chapter)) == _writes(nb)
+    assert not any("nbgrader" in c.metadata for c in nb.cells)
+    assert not any("answer_" in c.source for c in nb.cells if c.cell_type == "code")
+    last = nb.cells[-1]
+    assert last.source.startswith("## Problem set")
+    target = path.parent / f"../problem_sets/{sync.problem_set_path(chapter).name}"
+    assert f"]({target.relative_to(path.parent)})" in last.source and target.resolve().is_file()
+
+
+def test_a_new_problem_set_is_stable_and_valid():
+    once = _fresh(4)
+    twice = sync.sync_problem_set(copy.deepcopy(once), 4)
+    assert _writes(once) == _writes(twice)
+    assert len(once.cells) == 3 + 3 * len(exercises(4))
+    assert once.cells[0].source.startswith("# Problem set 4 · Working with Rotations")
     nbformat.validate(once)
 
 
-@pytest.mark.parametrize("chapter", [1, 2, 3, 4])
+@pytest.mark.parametrize("chapter", CHAPTERS)
 def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chapter):
-    nb = sync.sync(nbformat.v4.new_notebook(), chapter)
+    nb = _fresh(chapter)
     metas = [c.metadata["nbgrader"] for c in nb.cells]
     ids = [m["grade_id"] for m in metas]
     assert len(set(ids)) == len(ids)
+    by_id = {m["grade_id"]: (m, c) for m, c in zip(metas, nb.cells)}
     for ex in exercises(chapter):
-        by_id = {m["grade_id"]: (m, c) for m, c in zip(metas, nb.cells)}
         check, cell = by_id[f"{ex.name}-check"]
         assert check["grade"] and check["locked"] and not check["solution"]
         assert check["points"] == ex.points
@@ -75,9 +91,9 @@ def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chap
             assert word not in cell.source.upper()
 
 
-@pytest.mark.parametrize("chapter", [1, 2, 3, 4])
-def test_section_cells_run_in_order_and_every_check_passes(chapter):
-    nb = sync.sync(nbformat.v4.new_notebook(), chapter)
+@pytest.mark.parametrize("chapter", CHAPTERS)
+def test_problem_set_cells_run_in_order_and_every_check_passes(chapter):
+    nb = _fresh(chapter)
     ns = {}
     shown = []
     for cell in nb.cells:
@@ -91,40 +107,91 @@ def test_section_cells_run_in_order_and_every_check_passes(chapter):
     assert all(str(r).startswith("✓ ") for r in results), [str(r) for r in results]
 
 
-def test_command_line_skips_a_missing_notebook_and_refuses_an_unnumbered_one(tmp_path, capsys):
-    bad = tmp_path / "notes.ipynb"
-    nbformat.write(nbformat.v4.new_notebook(), bad)
-    assert sync.main([str(tmp_path / "04_missing.ipynb"), str(bad)]) == 2
-    out = capsys.readouterr().out
-    assert "no such notebook, skipped" in out and "must start with a chapter number" in out
-    good = tmp_path / "04_working_with_rotations.ipynb"
-    nbformat.write(nbformat.v4.new_notebook(), good)
-    assert sync.main([str(good)]) == 0
-    text = good.read_text()
-    assert sync.main([str(good)]) == 0 and good.read_text() == text
-    assert "(unchanged)" in capsys.readouterr().out
+def test_hidden_tests_and_hand_made_cells_survive_a_resync():
+    nb = _fresh(1)
+    check = next(c for c in nb.cells if c.id == "coords_by_projection-check")
+    check.source += "\n" + HIDDEN
+    mine = nbformat.v4.new_markdown_cell("A note of the instructor's, after exercise 1.1.")
+    at = nb.cells.index(check) + 1
+    nb.cells.insert(at, mine)
+    first = nbformat.v4.new_code_cell("RNG_SEED = 7  # the instructor's own first cell")
+    nb.cells.insert(0, first)
+    again = sync.sync_problem_set(copy.deepcopy(nb), 1)
+    assert _writes(again) == _writes(nb)
+    ids = [c.id for c in again.cells]
+    assert ids[0] == first.id and ids[ids.index("coords_by_projection-check") + 1] == mine.id
+    kept = next(c for c in again.cells if c.id == "coords_by_projection-check")
+    assert kept.source.endswith(HIDDEN) and kept.source.count("BEGIN HIDDEN TESTS") == 1
 
 
-@pytest.mark.parametrize("chapter", [1, 2, 3, 4])
+def test_a_changed_solution_in_tools_solutions_is_written(monkeypatch):
+    nb = _fresh(1)
+    sols, mistakes = sync.solutions(1)
+    changed = {**sols, "coords_by_projection": sols["coords_by_projection"] + "  # edited"}
+    monkeypatch.setattr(sync, "solutions", lambda chapter: (changed, mistakes))
+    again = sync.sync_problem_set(nb, 1)
+    cell = next(c for c in again.cells if c.id == "coords_by_projection-answer")
+    assert "# edited" in cell.source
+
+
+def test_a_solution_edited_in_the_notebook_is_never_overwritten(tmp_path):
+    nb = _fresh(1)
+    cell = next(c for c in nb.cells if c.id == "coords_by_projection-answer")
+    cell.source = cell.source.replace("### END SOLUTION", "x_extra = 1\n### END SOLUTION")
+    with pytest.raises(sync.SyncError, match="coords_by_projection-answer.*edited in the notebook"):
+        sync.sync_problem_set(nb, 1, tmp_path / "ps01_x.ipynb")
+
+
+def test_cells_of_an_exercise_removed_from_the_bank_are_dropped():
+    nb = _fresh(1)
+    stale = [
+        nbformat.v4.new_markdown_cell("### Exercise 1.9: gone"),
+        nbformat.v4.new_code_cell("answer_gone = None"),
+    ]
+    stale[0].id, stale[1].id = "gone-statement", "gone-answer"
+    for cell in stale:
+        cell.metadata["nbgrader"] = {"grade_id": cell.id, "locked": True}
+    nb.cells += stale
+    again = sync.sync_problem_set(nb, 1)
+    assert not {"gone-statement", "gone-answer"} & {c.id for c in again.cells}
+
+
+def test_chapter_cells_whose_ids_look_like_exercise_cells_are_kept():
+    """Regression: a chapter cell id such as ``angles-check`` matched the exercise-id pattern and
+    sync dropped it (found on chapter 05); only cells with nbgrader metadata are the tool's."""
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("# Chapter 1 · Frames")])
+    mine = nbformat.v4.new_code_cell("print(1)")
+    mine.id = "angles-check"
+    nb.cells.append(mine)
+    again = sync.sync_chapter(nb, 1)
+    assert [c.id for c in again.cells][-2:] == ["angles-check", "ch1-problem-set"]
+
+
+def test_command_line_refuses_an_unknown_chapter(capsys):
+    assert sync.main(["9"]) == 2
+    assert "no such chapter in the bank: [9]" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("chapter", CHAPTERS)
 @pytest.mark.parametrize(
     "command",
     [["check", "--output-format", "concise"], ["format", "--check"]],
     ids=["ruff check", "ruff format --check"],
 )
 def test_generated_cells_pass_ruff(chapter, command, tmp_path):
-    """What the tools write (setup cell, exercise section) is ruff-clean and in ruff's format.
+    """What the tools write (setup cell, problem set) is ruff-clean and in ruff's format.
 
     `make lint` covers the notebooks too; this finds a template or a worked solution that would
     not pass, before any notebook is regenerated. Formatting must also leave the nbgrader
     markers where they are (the answer cells are unchanged by `ruff format`). F401 is not asked
-    of a section alone: chapter 3's answers are symbolic, yet its set-up cell imports numpy
-    for the student's own work.
+    of a problem set: chapter 3's answers are symbolic, yet its set-up cell imports numpy for
+    the student's own work.
     """
     from tools import notebooks as nbtool
 
-    nb = sync.sync(nbformat.v4.new_notebook(), chapter)
+    nb = _fresh(chapter)
     nbtool.put_setup_cell(nb, "https://github.com/example/rotations-course")
-    path = tmp_path / f"ch{chapter:02d}.ipynb"
+    path = tmp_path / f"ps{chapter:02d}.ipynb"
     nbformat.write(nb, path)
     run = subprocess.run(
         [

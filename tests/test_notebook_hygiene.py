@@ -1,8 +1,8 @@
-"""The chapter notebooks stay lean and stable, and open wherever a class works.
+"""The chapter and problem-set notebooks stay lean and stable, and open wherever a class works.
 
 `make notebooks` (tools/notebooks.py) puts the setup cell first, executes and cleans every
-chapter; these tests check its result on the committed notebooks, one property at a time, and
-the tool itself on small notebooks.
+chapter and problem set; these tests check its result on the committed notebooks, one property
+at a time, and the tool itself on small notebooks.
 """
 
 import base64
@@ -25,7 +25,9 @@ import course_links  # noqa: E402
 
 import notebooks as nbtool  # noqa: E402
 
-CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb"))
+CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb")) + sorted(
+    (ROOT / "problem_sets").glob("ps[0-9]*.ipynb")
+)
 MAX_TOTAL_BYTES = 1_500_000
 
 
@@ -122,7 +124,7 @@ def test_readme_launch_links_follow_pyproject():
         re.escape(course_links.BEGIN) + ".*?" + re.escape(course_links.END), text, re.S
     )
     assert block, "README.md has no launch-links block"
-    names = [p.name for p in CHAPTERS]
+    names = [p.name for p in CHAPTERS if p.parent.name == "notebooks"]
     assert block.group(0) == course_links.readme_block(course_links.repository_url(), names)
 
 

@@ -38,6 +38,7 @@ from course_lib.student import (
 )
 
 NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+PROBLEM_SETS = NOTEBOOKS.parent / "problem_sets"
 KERNELSPEC = {"name": "python3", "display_name": "Python 3", "language": "python"}
 PNG = base64.b64encode(b"\x89PNG\r\n\x1a\n solution figure").decode()
 WIDGET_STATE = {
@@ -402,7 +403,7 @@ def test_regression_a_stray_marker_after_a_solution_was_reported_at_the_wrong_li
 
 def test_marker_rule_is_nbgraders_on_the_synthetic_and_the_real_notebooks():
     assert assert_agrees_with_nbgrader(synthetic_notebook()) == "same"
-    for path in sorted(NOTEBOOKS.glob("*.ipynb")):
+    for path in sorted([*NOTEBOOKS.glob("*.ipynb"), *PROBLEM_SETS.glob("*.ipynb")]):
         assert_agrees_with_nbgrader(nbformat.read(path, as_version=4))
 
 
@@ -763,7 +764,7 @@ def test_cli_unbalanced_markers_exit_two_and_write_nothing(tmp_path):
 
 # --------------------------------------------------------------------------------- real notebooks
 
-REAL = sorted(p for p in NOTEBOOKS.glob("*.ipynb") if "BEGIN SOLUTION" in p.read_text())
+REAL = sorted(p for p in PROBLEM_SETS.glob("*.ipynb") if "BEGIN SOLUTION" in p.read_text())
 
 
 def cells_with(nb, flag, cell_type=None):
@@ -788,16 +789,16 @@ def region_lines(source):
 
 
 def test_real_notebooks_have_solution_cells():
-    # The chapter notebooks carry their exercises; the tests below need them.
-    assert len(REAL) >= 3, [p.name for p in NOTEBOOKS.glob("*.ipynb")]
+    # The problem sets carry the exercises (the chapters none); the tests below need them.
+    assert len(REAL) >= 3, [p.name for p in PROBLEM_SETS.glob("*.ipynb")]
 
 
 @pytest.fixture(scope="module")
 def real_copies(tmp_path_factory):
-    before = snapshot(NOTEBOOKS)
+    before = snapshot(PROBLEM_SETS)
     out = tmp_path_factory.mktemp("student")
-    make_student_notebooks(NOTEBOOKS, out)
-    assert snapshot(NOTEBOOKS) == before  # the sources are untouched
+    make_student_notebooks(PROBLEM_SETS, out)
+    assert snapshot(PROBLEM_SETS) == before  # the sources are untouched
     return out
 
 

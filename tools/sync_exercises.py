@@ -1,24 +1,33 @@
-"""Write the "## Exercises" section of chapter notebooks from the exercise bank.
+"""Write the problem sets from the exercise bank, and the pointer that ends each chapter.
 
-    python tools/sync_exercises.py notebooks/*.ipynb
+    python tools/sync_exercises.py          # every chapter of the bank
+    python tools/sync_exercises.py 1 3      # chapters 1 and 3 only
 
-The chapter is read from the file name (``01_...`` is chapter 1). Everything from the markdown
-cell that starts with ``## Exercises`` to the end of the notebook is replaced by:
+``make exercises`` runs it after ``tools/exercise_fingerprints.py`` and before executing the
+problem sets. For chapter N (reading notebook ``notebooks/NN_<slug>.ipynb``) it writes:
 
-- an introduction and the set-up cell (the imports of ``SETUP`` in the chapter's bank module);
-- per exercise: the statement (markdown, from the bank), the answer cell (nbgrader solution
-  cell: ``answer_<name> = None`` and the worked solution of ``tools/solutions/chNN.py`` between
-  nbgrader's markers) and the check cell (nbgrader autograder test cell, locked, with the points
-  of the exercise's level: it shows ✓, or fails with the hint).
+- ``problem_sets/psNN_<slug>.ipynb``, the nbgrader source notebook of the chapter's graded
+  exercises: a title, how the exercises work, the set-up cell (the imports of ``SETUP`` in the
+  chapter's bank module), then per exercise its statement (from the bank), its answer cell
+  (nbgrader solution cell: ``answer_<name> = None`` and the worked solution of
+  ``tools/solutions/chNN.py`` between nbgrader's markers) and its check cell (autograder test
+  cell, locked, with the points of the exercise's level);
+- the last cell of the chapter: a pointer to its problem set. A chapter holds no exercise.
 
-A notebook without such a heading gets the section appended. Idempotent: a cell whose source
-and metadata are already right keeps its outputs, so running it twice changes nothing. Cell ids
-are derived from the exercise names. Re-execute the notebooks afterwards.
+What an instructor added by hand is kept: the hidden tests of a check cell (between
+``### BEGIN HIDDEN TESTS`` and ``### END HIDDEN TESTS``) and every cell whose id this tool does
+not write (it stays after the cell it followed). The worked solutions have one home,
+``tools/solutions/chNN.py``: a problem set whose solution region differs from it is not
+overwritten (the tool says where, and exits 2), so an edit made in the notebook is never lost.
+
+Idempotent: a cell whose source and metadata are already right keeps its outputs. Cell ids are
+derived from the exercise names. Re-execute the problem sets afterwards (``make exercises``).
 """
 
 from __future__ import annotations
 
 import argparse
+import hashlib
 import re
 import sys
 from pathlib import Path
@@ -34,9 +43,12 @@ from course_lib.exercises import exercises  # noqa: E402
 from course_lib.student import nbgrader_metadata  # noqa: E402
 from tools.exercise_fingerprints import solutions  # noqa: E402
 
+CHAPTERS_DIR = ROOT / "notebooks"
+PROBLEM_SETS_DIR = ROOT / "problem_sets"
 MARK = "### "
-HEADING = "## Exercises"
-INTRO = """## Exercises
+HIDDEN = re.compile(r"^### BEGIN HIDDEN TESTS$.*?^### END HIDDEN TESTS$", re.M | re.S)
+SOLUTION = re.compile(r"^### BEGIN SOLUTION\n(.*?)\n### END SOLUTION$", re.M | re.S)
+INTRO = """## How the exercises work
 
 Each exercise shows its level (warm-up, core or challenge) and its points in the heading. Write
 your answer in the code cell under the statement and assign it to the variable named there;
@@ -46,7 +58,64 @@ form (for example a matrix expression in `W`, which stands for $\\hat\\omega$), 
 another form is marked wrong, with a hint that says which form is asked for. Numbers are
 compared to about nine digits: give exact values (`sp.sqrt(2)`, `sp.pi / 3`) or let Python
 compute them, rather than typing rounded decimals.
-The symbols come from `course_lib.exercises`."""
+The symbols come from `course_lib.exercises`. Run the setup cell at the top first."""
+
+
+class SyncError(Exception):
+    """A problem set that the tool must not overwrite; the message says where and why."""
+
+
+def chapter_notebook(chapter):
+    """The reading notebook ``notebooks/NN_<slug>.ipynb`` of ``chapter``."""
+    found = sorted(CHAPTERS_DIR.glob(f"{chapter:02d}_*.ipynb"))
+    if len(found) != 1:
+        raise SyncError(f"chapter {chapter}: expected one notebook notebooks/{chapter:02d}_*.ipynb")
+    return found[0]
+
+
+def problem_set_path(chapter):
+    """``problem_sets/psNN_<slug>.ipynb``: the chapter's slug with ``ps`` in front."""
+    return PROBLEM_SETS_DIR / f"ps{chapter_notebook(chapter).name}"
+
+
+def chapter_title(chapter):
+    """The title of the chapter's notebook, without its "Chapter N ·" prefix."""
+    nb = nbformat.read(chapter_notebook(chapter), as_version=4)
+    for cell in nb.cells:
+        m = re.match(r"#\s+Chapter\s+\d+\s*·\s*(.+)", cell.source.strip())
+        if cell.cell_type == "markdown" and m:
+            return m.group(1).strip()
+    raise SyncError(f"{chapter_notebook(chapter).name}: no '# Chapter {chapter} · Title' heading")
+
+
+def _tally(chapter):
+    exs = exercises(chapter)
+    levels = ", ".join(
+        f"{sum(ex.level == level for ex in exs)} {level}"
+        for level in ("warm-up", "core", "challenge")
+        if any(ex.level == level for ex in exs)
+    )
+    return f"{len(exs)} exercises, {sum(ex.points for ex in exs)} points ({levels})"
+
+
+def _title(chapter):
+    chap = chapter_notebook(chapter).name
+    return (
+        f"# Problem set {chapter} · {chapter_title(chapter)}\n\n"
+        f"The graded exercises of chapter {chapter} ([{chap}](../notebooks/{chap})): "
+        f"{_tally(chapter)}. Read the chapter first; every exercise uses only what it shows."
+    )
+
+
+def pointer_source(chapter):
+    """The chapter's last cell: where its exercises are."""
+    ps = problem_set_path(chapter).name
+    return (
+        "## Problem set\n\n"
+        f"The exercises of this chapter are graded, in a notebook of their own: "
+        f"[problem set {chapter}](../problem_sets/{ps}) (`problem_sets/{ps}`), "
+        f"{_tally(chapter)}."
+    )
 
 
 def _solution_source(ex, code):
@@ -68,24 +137,16 @@ def _check_source(ex):
     )
 
 
-def section_cells(chapter):
-    """The cells of a chapter's exercise section, as (kind, id, source, metadata) tuples."""
+def problem_set_cells(chapter):
+    """The generated cells of a problem set, as (kind, id, source, metadata) tuples."""
     bank = exercise_bank.chapter_module(chapter)
     sols, _ = solutions(chapter)
-    cells = [
-        (
-            "markdown",
-            f"ch{chapter}-exercises",
-            INTRO,
-            nbgrader_metadata(f"ch{chapter}-exercises", locked=True),
-        ),
-        (
-            "code",
-            f"ch{chapter}-exercises-setup",
-            bank.SETUP,
-            nbgrader_metadata(f"ch{chapter}-exercises-setup", locked=True),
-        ),
+    head = [
+        ("markdown", f"ps{chapter}-title", _title(chapter)),
+        ("markdown", f"ch{chapter}-exercises", INTRO),
+        ("code", f"ch{chapter}-exercises-setup", bank.SETUP),
     ]
+    cells = [(kind, cid, src, nbgrader_metadata(cid, locked=True)) for kind, cid, src in head]
     for ex in exercises(chapter):
         cells += [
             (
@@ -110,13 +171,45 @@ def section_cells(chapter):
     return cells
 
 
+# ---------------------------------------------------------------------------------------------
+# Merging with what is on disk
+# ---------------------------------------------------------------------------------------------
+
+_OWNED_ID = re.compile(
+    r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|answer|check))$"
+)
+
+
+def _owned(cell):
+    """Whether the tool wrote ``cell``: an exercise-style id and nbgrader metadata.
+
+    A chapter's own cells (ids such as ``angles-check``) and an instructor's cells (random ids)
+    are never the tool's, whatever their ids look like.
+    """
+    return bool(_OWNED_ID.match(cell.get("id") or "")) and "nbgrader" in cell.get("metadata", {})
+
+
+def _digest(code):
+    return hashlib.sha256(code.strip().encode()).hexdigest()[:16]
+
+
+def _guard_solution(path, cid, old, code):
+    """SyncError if the solution region of ``old`` was edited by hand and differs from ``code``."""
+    m = SOLUTION.search(old.source)
+    written = old.get("metadata", {}).get("course", {}).get("solution")
+    if m is None or m.group(1).strip() == code.strip() or _digest(m.group(1)) == written:
+        return
+    raise SyncError(
+        f"{path.name}, cell {cid}: its worked solution was edited in the notebook and differs "
+        f"from tools/solutions; copy your edit into tools/solutions (the one home of the "
+        f"solutions) or undo it, then run again. Nothing was written."
+    )
+
+
 def _make_cell(kind, cid, source, meta, old):
-    if (
-        old is not None
-        and old.cell_type == kind
-        and old.source == source
-        and old.get("metadata", {}).get("nbgrader") == meta["nbgrader"]
-    ):
+    if old is not None and old.cell_type == kind and cid.endswith("-check"):
+        source = "\n".join([source, *HIDDEN.findall(old.source)])  # keep the hidden tests
+    if old is not None and old.cell_type == kind and old.source == source:
         new = old  # unchanged: keep its outputs
     elif kind == "markdown":
         new = nbformat.v4.new_markdown_cell(source)
@@ -127,58 +220,91 @@ def _make_cell(kind, cid, source, meta, old):
     return new
 
 
-def chapter_of(path):
-    m = re.match(r"(\d\d)_", Path(path).name)
-    if not m or int(m.group(1)) not in exercise_bank.CHAPTERS:
-        raise ValueError(f"{path}: the file name must start with a chapter number, e.g. 01_")
-    return int(m.group(1))
-
-
-def sync(nb, chapter):
-    """The notebook with its exercise section rewritten (a new cell list; nb is updated)."""
-    start = next(
-        (
-            i
-            for i, c in enumerate(nb.cells)
-            if c.cell_type == "markdown" and c.source.lstrip().startswith(HEADING)
-        ),
-        len(nb.cells),
+def sync_problem_set(nb, chapter, path=None):
+    """The problem set ``nb`` (or a new one) rewritten from the bank; hand-made cells kept."""
+    path = path or problem_set_path(chapter)
+    nb = nb or nbformat.v4.new_notebook()
+    sols, _ = solutions(chapter)
+    old = {c.get("id"): c for c in nb.cells}
+    generated = problem_set_cells(chapter)
+    ids = {cid for _, cid, _, _ in generated}
+    for cid, cell in old.items():
+        if cid in ids and cid.endswith("-answer"):
+            _guard_solution(path, cid, cell, sols[cid.removesuffix("-answer")])
+    follows, prev = {}, None  # hand-made cells, by the generated cell they follow
+    for cell in nb.cells:
+        cid = cell.get("id")
+        if cid in ids:
+            prev = cid
+        elif not _owned(cell):
+            follows.setdefault(prev, []).append(cell)
+    cells = follows.get(None, [])
+    for kind, cid, src, meta in generated:
+        cell = _make_cell(kind, cid, src, meta, old.get(cid))
+        if cid.endswith("-answer"):
+            cell.metadata["course"] = {"solution": _digest(sols[cid.removesuffix("-answer")])}
+        cells += [cell, *follows.get(cid, [])]
+    nb.cells = cells
+    nb.metadata.setdefault(
+        "kernelspec", {"name": "python3", "display_name": "Python 3", "language": "python"}
     )
-    old = {c.get("id"): c for c in nb.cells[start:]}
-    new = [
-        _make_cell(kind, cid, src, meta, old.get(cid))
-        for kind, cid, src, meta in section_cells(chapter)
-    ]
-    nb.cells = nb.cells[:start] + new
     return nb
+
+
+def sync_chapter(nb, chapter):
+    """The chapter ``nb`` without exercise cells, ending with the pointer to its problem set."""
+    pid = f"ch{chapter}-problem-set"
+    cells = [c for c in nb.cells if not _owned(c) and c.get("id") != pid]
+    old = next((c for c in nb.cells if c.get("id") == pid), None)
+    source = pointer_source(chapter)
+    pointer = (
+        old if old is not None and old.source == source else nbformat.v4.new_markdown_cell(source)
+    )
+    pointer.id = pid
+    nb.cells = [*cells, pointer]
+    return nb
+
+
+def _write(path, nb, old_text):
+    text = nbformat.writes(nb) + "\n"
+    if text != old_text:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text, encoding="utf-8")
+    return text != old_text
+
+
+def sync(chapter):
+    """Rewrite the chapter's problem set and pointer; one line saying what changed."""
+    ps_path, ch_path = problem_set_path(chapter), chapter_notebook(chapter)
+    ps_text = ps_path.read_text(encoding="utf-8") if ps_path.exists() else ""
+    ps = nbformat.reads(ps_text, as_version=4) if ps_text else None
+    ps = sync_problem_set(ps, chapter, ps_path)
+    ch_text = ch_path.read_text(encoding="utf-8")
+    ch = sync_chapter(nbformat.reads(ch_text, as_version=4), chapter)
+    changed = [
+        p.name for p, nb, t in ((ps_path, ps, ps_text), (ch_path, ch, ch_text)) if _write(p, nb, t)
+    ]
+    return f"chapter {chapter}: {_tally(chapter)}; " + (
+        f"rewrote {', '.join(changed)}" if changed else "unchanged"
+    )
 
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("notebooks", nargs="+", metavar="NOTEBOOK")
+    parser.add_argument("chapters", nargs="*", type=int, metavar="CHAPTER")
     args = parser.parse_args(argv)
-    status = 0
-    for name in args.notebooks:
-        path = Path(name)
-        if not path.is_file():
-            print(f"{path}: no such notebook, skipped")
-            continue
-        try:
-            chapter = chapter_of(path)
-        except ValueError as err:
-            print(err)
-            status = 2
-            continue
-        text = path.read_text()
-        nb = sync(nbformat.reads(text, as_version=4), chapter)
-        out = nbformat.writes(nb) + ("\n" if text.endswith("\n") else "")
-        if out != text:
-            path.write_text(out)
-        print(
-            f"{path}: chapter {chapter}, {len(exercises(chapter))} exercises"
-            + ("" if out != text else " (unchanged)")
-        )
-    return status
+    chapters = args.chapters or sorted(exercise_bank.CHAPTERS)
+    unknown = sorted(set(chapters) - set(exercise_bank.CHAPTERS))
+    if unknown:
+        print(f"no such chapter in the bank: {unknown}; known: {sorted(exercise_bank.CHAPTERS)}")
+        return 2
+    try:
+        for chapter in chapters:
+            print(sync(chapter))
+    except SyncError as err:
+        print(err)
+        return 2
+    return 0
 
 
 if __name__ == "__main__":

@@ -43,6 +43,7 @@ DEPS = BUILD / "site-deps"
 MATHJAX = "mathjax@3.2.2"
 STUB = "raise NotImplementedError("
 FOLDERS = ("notebooks", "problem_sets")
+SIBLING_LINK = re.compile(r"\]\(\.\./(?:notebooks|problem_sets)/")  # a chapter <-> its problem set
 STILL_NOTE = (
     "*A still picture of the explorer: its sliders and the 3D view you turn with the mouse need "
     "a running Jupyter kernel; run this chapter yourself to use them.*"
@@ -122,6 +123,8 @@ def prepare(nb, name, url):
     nb.cells = [c for c in nb.cells if c.get("id") != nbtool.SETUP_ID]
     nb.cells.insert(1, nbformat.v4.new_markdown_cell(launch_line(url, name)))
     for cell in nb.cells:
+        if cell.cell_type == "markdown":  # the site's pages are side by side
+            cell.source = SIBLING_LINK.sub("](", cell.source)
         # a stub raises, and so does the check cell after it (an nbgrader test cell)
         graded = cell.metadata.get("nbgrader", {}).get("grade", False)
         if cell.cell_type == "code" and (STUB in cell.source or graded):

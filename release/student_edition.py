@@ -48,9 +48,14 @@ BRANCH = course_links.STUDENT_BRANCH
 
 
 def student_tests(tests_dir):
-    """({file name: kept}, {file name: why left out}) of the test files of ``tests_dir``."""
+    """([files kept], {file name: why left out}) of ``tests_dir``: test files, their helper
+    modules (``conftest.py``, ``plotting_helpers.py``, ...) and data files (``*.cfg``)."""
     kept, left_out = [], {}
-    for path in sorted(Path(tests_dir).glob("test_*.py")):
+    files = [p for p in sorted(Path(tests_dir).iterdir()) if p.is_file()]
+    for path in files:
+        if path.suffix != ".py":
+            kept.append(path.name)
+            continue
         m = INSTRUCTOR_TEST.search(path.read_text(encoding="utf-8"))
         if m is None:
             kept.append(path.name)
@@ -146,7 +151,7 @@ def build_student_edition(root, out):
     notebooks = _notebooks(root, out)
     kept, left_out = student_tests(root / "tests")
     (out / "tests").mkdir()
-    for name in [*kept, "conftest.py", "nbval_sanitize.cfg"]:
+    for name in kept:
         shutil.copy(root / "tests" / name, out / "tests" / name)
     for name in ("Makefile", "conftest.py"):
         shutil.copy(TEMPLATE / name, out / name)
@@ -165,4 +170,5 @@ def build_student_edition(root, out):
     url = course_links.repository_url(root / "pyproject.toml")
     (out / "README.md").write_text(_readme(url, chapters), encoding="utf-8")
     _commit(out, _source_rev(root))
-    return {"notebooks": notebooks, "tests": kept, "left_out": left_out}
+    tests = [name for name in kept if name.startswith("test_")]
+    return {"notebooks": notebooks, "tests": tests, "left_out": left_out}

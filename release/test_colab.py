@@ -11,8 +11,10 @@ course around it, and executed with nbconvert in that kernel:
 1. while the course has no published address (``COURSE_URL = None``), the setup cell stops with
    a message in plain words (ask for the course link, or open it from the hub), no README;
 2. with the release's wheel as the published address, the setup cell installs the course with
-   ``%pip`` (pulling in ipympl), and the chapter runs with no error but the problem-set stubs
-   (``NotImplementedError``) and the check cells of the exercises not yet solved.
+   ``%pip`` (pulling in ipympl), and the chapter runs with no error (but a problem-set stub,
+   where a chapter still holds its exercises, and the check cell after it);
+3. its problem set, alone the same way, runs up to its stubs (``NotImplementedError``) and
+   the check cells of the exercises not yet solved, and fails nowhere else.
 """
 
 import json
@@ -35,7 +37,8 @@ import notebooks as nbtool  # noqa: E402
 
 pytestmark = [pytest.mark.colab, pytest.mark.notebook_exec]
 COLAB_DEFAULTS = ("numpy", "sympy", "matplotlib", "ipykernel", "ipywidgets")
-CHAPTER = "03_exponential_coordinates.ipynb"  # an explorer, the animation, exercises
+CHAPTER = "03_exponential_coordinates.ipynb"  # an explorer, the animation
+PROBLEM_SET = ROOT / "problem_sets" / "ps03_exponential_coordinates.ipynb"
 KERNEL = "colab-like"
 STUB = "raise NotImplementedError("
 
@@ -122,9 +125,19 @@ def test_a_chapter_alone_runs_as_in_colab(release, colab_kernel, tmp_path):
     } - stubs
     unexpected = {i: e for i, e in errors.items() if i not in stubs | checks}
     assert unexpected == {}, unexpected
-    assert {errors[i].split(":")[0] for i in stubs} == {"NotImplementedError"}
+    assert all(errors.get(i, "").startswith("NotImplementedError") for i in stubs), errors
     for i in checks:
         assert not errors.get(i, "").startswith(("NameError", "ModuleNotFoundError")), errors[i]
     shown = json.dumps([c.get("outputs", []) for c in cells])
     assert "application/vnd.jupyter.widget-view+json" in shown  # the live explorer (ipympl)
     assert "font-awesome" not in shown and "A still picture" not in shown
+
+    # 3. Its problem set alone, the same way: it runs up to its stubs, and stops only there.
+    if PROBLEM_SET.is_file():
+        path = _alone(student / "problem_sets" / PROBLEM_SET.name, tmp_path / "ps", str(wheel))
+        nb = _execute(path, jupyter_path)
+        errors, cells = _errors(nb), nb["cells"]
+        stubs = {i for i, c in enumerate(cells) if STUB in "".join(c["source"])}
+        graded = {i for i, c in enumerate(cells) if c["metadata"].get("nbgrader", {}).get("grade")}
+        assert stubs and {i: e for i, e in errors.items() if i not in stubs | graded} == {}
+        assert all(errors[i].startswith("NotImplementedError") for i in stubs), errors

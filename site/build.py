@@ -69,9 +69,23 @@ def install_scripts():
         )
     static = DEPS / "static"
     shutil.rmtree(static, ignore_errors=True)
-    shutil.copytree(modules / "mathjax" / "es5", static / "mathjax")
+    shutil.copytree(modules / "mathjax" / "es5", static / "mathjax", ignore=_unused_mathjax)
     shutil.copy(HERE / "static" / "course.css", static / "course.css")
     return static
+
+
+def _unused_mathjax(folder, names):
+    """MathJax's other combined bundles and its SVG output: the pages load tex-chtml.js only.
+
+    (17 of its 24 MB; what tex-chtml.js loads on demand, fonts, a11y, sre, ui, is kept.)
+    """
+    top = Path(folder).name == "es5"
+    return [
+        n
+        for n in names
+        if (top and n.endswith(".js") and n != "tex-chtml.js")
+        or (Path(folder).name == "output" and n in ("svg", "svg.js"))
+    ]
 
 
 def source_notebooks(src, solutions, student_dir):

@@ -118,6 +118,10 @@ def test_the_edition_holds_no_instructor_tool_and_no_answer_test(built):
     tests = {p.name for p in (student / "tests").glob("test_*.py")}
     assert "test_exercises.py" not in tests and "test_student.py" not in tests
     assert {"test_so3.py", "test_interactive.py"} <= tests
+    # what the kept tests import from their folder comes along (regression: plotting_helpers)
+    assert {"conftest.py", "nbval_sanitize.cfg", "plotting_helpers.py"} <= {
+        p.name for p in (student / "tests").iterdir()
+    }
     for name in ("README.md", "Makefile", "conftest.py", "requirements-test.txt", ".gitignore"):
         assert (student / name).is_file(), name
     pins = (student / "requirements-test.txt").read_text()
@@ -171,8 +175,10 @@ def test_student_tests_leave_out_what_names_answers_and_say_why(tmp_path):
     (tmp_path / "test_a.py").write_text("from course_lib import so3\n")
     (tmp_path / "test_b.py").write_text("answer_hat = omega * omega.T\n")
     (tmp_path / "test_c.py").write_text("import nbgrader\n")
+    (tmp_path / "helpers.py").write_text("def f():\n    return 1\n")
+    (tmp_path / "sanitize.cfg").write_text("[x]\n")
     kept, left_out = student_edition.student_tests(tmp_path)
-    assert kept == ["test_a.py"]
+    assert kept == ["helpers.py", "sanitize.cfg", "test_a.py"]
     assert "answers" in left_out["test_b.py"] and "tool" in left_out["test_c.py"]
 
 

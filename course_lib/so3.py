@@ -351,16 +351,16 @@ def _exp_single(w, theta, tol):
 def exp(w, theta=None, tol=TOL):
     r"""Rodrigues' formula: the rotation matrix :math:`e^{\hat\omega\theta}`.
 
-    With one argument, ``w`` is a rotation vector :math:`r = \omega\theta` (unit axis times
-    angle, the exponential coordinates of the rotation) and
+    With ``theta``, ``w`` must be a unit axis :math:`\omega` and the result is the notes'
 
     .. math::
 
-        e^{\hat r} = I + \frac{\sin\|r\|}{\|r\|}\hat r + \frac{1-\cos\|r\|}{\|r\|^2}\hat r^2 .
+        R(\omega, \theta) = e^{\hat\omega\theta}
+        = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2 \qquad \text{(eq. 159)}.
 
-    With ``theta``, ``w`` must be a unit axis :math:`\omega` and the result is the notes'
-    :math:`R(\omega, \theta) = e^{\hat\omega\theta}
-    = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2` (eq. 159).
+    With one argument, ``w`` is a rotation vector :math:`r = \omega\theta`, the exponential
+    coordinates of the rotation: the result is :math:`R(\omega, \theta)` for its unit axis
+    :math:`\omega` and its angle :math:`\theta \ge 0` (and :math:`I` for :math:`r = 0`).
 
     Parameters
     ----------

@@ -19,7 +19,7 @@ sys.path.insert(0, str(ROOT))
 from course_lib.exercises import exercises  # noqa: E402
 from tools import sync_exercises as sync  # noqa: E402
 
-CHAPTERS = [1, 2, 3, 4]
+CHAPTERS = [1, 2, 3, 4, 5]
 MARKER_WORDS = ("BEGIN SOLUTION", "END SOLUTION", "HIDDEN TESTS")
 HIDDEN = (
     "### BEGIN HIDDEN TESTS\nassert answer_coords_by_projection is not None\n### END HIDDEN TESTS"

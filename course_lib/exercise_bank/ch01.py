@@ -94,14 +94,14 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
         tip="Every map here keeps distances; test the cross product on e₁, e₂: is "
         "g_*(e₁) × g_*(e₂) = g_*(e₃)? (For g(p) = Mp + d that is det M = +1.)",
         mistakes={
-            "mirrors": "some of your maps keep every distance but turn a right-handed frame into "
-            "a left-handed one: compare g_*(e₁) × g_*(e₂) with g_*(e₃).",
-            "translation": "a translation keeps distances and cross products of vectors too "
-            "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
-            "two_mirrors": "two reflections one after the other are not a reflection: each "
-            "flips the handedness, and the second flips it back.",
-            "point_reflection": "p ↦ −p is not a turn in three dimensions: its matrix −I has "
-            "det (−1)³ = −1, and a half turn after it (det +1) does not change the sign.",
+            "mirrors": "recheck the handedness: for each map compare g_*(e₁) × g_*(e₂) with "
+            "g_*(e₃).",
+            "translation": "recheck what Definition 1 allows: what does a translation do to "
+            "the difference of two points?",
+            "two_mirrors": "recheck the maps made of two reflections: what does each one do "
+            "to the handedness?",
+            "point_reflection": "recheck the maps built from p ↦ −p: what is det(−I) in three "
+            "dimensions, and what does a turn after it change?",
         },
     ),
     Exercise(

@@ -86,7 +86,8 @@ Give a 3-vector.
         tip="The trace gives θ (so sin θ); then read ω̂ off (R − Rᵀ)/(2 sin θ): "
         "ω = (entry (3,2), entry (1,3), entry (2,1)).",
         mistakes={
-            "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length)."
+            "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length).",
+            "no_two": "R − Rᵀ is twice the skew part sin θ ω̂: mind the factor 2.",
         },
     ),
     Exercise(
@@ -97,7 +98,7 @@ Give a 3-vector.
         title="Fixed axes and body axes",
         statement=r"""
 A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
-axis, then by 90° about its **own** (current) $y$ axis, then by 90° about the **world** $x$
+axis, then by 90° about its **own** (current) $x$ axis, then by 60° about the **world** $x$
 axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
 """,
         answer=Value(shape=(3, 3), rotation=True),
@@ -105,7 +106,7 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
         "body's own axis from the right.",
         mistakes={
             "all_body": "the last turn is about the world x axis: it multiplies from the left.",
-            "all_world": "the second turn is about the camera's own y axis: it multiplies from "
+            "all_world": "the second turn is about the camera's own x axis: it multiplies from "
             "the right.",
         },
     ),
@@ -146,8 +147,8 @@ both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
         tip="R_z(β) ≈ I + βẑ + β²ẑ²/2 and R_x(α) ≈ I + αx̂ + α²x̂²/2; the symmetric terms "
         "drop out of the skew part, and the skew part of ẑx̂ is ½(ẑx̂ − x̂ẑ).",
         mistakes={
-            "first_order": "that is the first-order part; the product βα ẑx̂ adds a "
-            "second-order term (its skew part is ½[ẑ, x̂], the hat of ½ e_y).",
+            "first_order": "that is the first-order part; the product of the two first-order "
+            "terms adds a term of second order: find its skew part.",
             "sign": "check the order of the factors: R_z(β) is on the left, so the cross term "
             "is βα ẑx̂, not αβ x̂ẑ.",
         },
@@ -170,6 +171,7 @@ first component positive. Give a 3-vector.
             "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by ω₁ > 0.",
             "abs": "the signs of the components are not free: ωᵢωⱼ = (R + I)ᵢⱼ/2 fixes them "
             "relative to each other.",
+            "row": "that is a row of (R + I)/2, which is ω₁ω, not ω: it is not a unit vector.",
         },
     ),
 ]

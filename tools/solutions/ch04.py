@@ -19,14 +19,13 @@ angle = sp.acos((0 - 1) / sp.Integer(2))  # tr R = 0: θ = 2π/3
 S = skew / (2 * sp.sin(angle))  # = ω̂
 answer_axis_of_rotation = sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])  # (2, 1, 2)/3""",
     "fixed_vs_body": """\
-c = np.cos(np.pi / 2)
-s = np.sin(np.pi / 2)
-Rx = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
-Ry = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-Rz = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+Rz = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])  # 90° about z
+Rx90 = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])  # 90° about x
+c, s = np.cos(np.pi / 3), np.sin(np.pi / 3)
+Rx60 = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])  # 60° about x
 R = Rz  # about the world z axis, from R = I
-R = R @ Ry  # about the body's own y axis: from the right
-R = Rx @ R  # about the world x axis: from the left
+R = R @ Rx90  # about the camera's own x axis: from the right
+R = Rx60 @ R  # about the world x axis: from the left
 answer_fixed_vs_body = R""",
     "composed_angle": """\
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(alpha), -sp.sin(alpha)], [0, sp.sin(alpha), sp.cos(alpha)]])
@@ -61,8 +60,11 @@ MISTAKES = {
         "rows": "R_ab.T @ (R_bc.T @ v_c)",
     },
     "angle_from_trace": {"cosine": "(trace - 1) / 2", "no_minus_one": "sp.acos(trace / 2)"},
-    "axis_of_rotation": {"unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])"},
-    "fixed_vs_body": {"all_body": "Rz @ Ry @ Rx", "all_world": "Rx @ Ry @ Rz"},
+    "axis_of_rotation": {
+        "unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])",
+        "no_two": "2 * answer_axis_of_rotation",
+    },
+    "fixed_vs_body": {"all_body": "Rz @ Rx90 @ Rx60", "all_world": "Rx60 @ Rx90 @ Rz"},
     "composed_angle": {
         "no_minus_one": "(Rx * Rz).trace() / 2",
         "sum": "sp.cos(alpha + beta)",
@@ -75,5 +77,6 @@ MISTAKES = {
     "half_turn_axis": {
         "other_sign": "-answer_half_turn_axis",
         "abs": "sp.Matrix([sp.Abs(e) for e in answer_half_turn_axis])",
+        "row": "answer_half_turn_axis[0] * answer_half_turn_axis",
     },
 }

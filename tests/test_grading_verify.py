@@ -50,14 +50,14 @@ def test_an_answer_fitted_to_the_checkers_seeded_points_is_wrong_at_fresh_points
     polynomial in α alone through its values at the checker's 40 seeded points."""
     name = "composed_angle"
     spec = EXERCISES[name].answer
-    pts = E.points(name, spec)
+    pts, _ = E.points(name, spec)
     ref = _namespace(name)["answer_" + name]
     f = sp.lambdify(sorted(ref.free_symbols, key=str), ref)
     target = f(pts[alpha], pts[E.base_symbols(spec)[1]])
     a = pts[alpha]
     cols = [np.ones_like(a)] + [g(n * a) for n in range(1, 20) for g in (np.cos, np.sin)]
     cols.append(np.cos(20 * a))
-    coef = np.linalg.solve(np.stack(cols, -1), target)
+    coef = np.linalg.lstsq(np.stack(cols, -1), target, rcond=None)[0]
     terms = [sp.Float(coef[0])]
     k = 1
     for n in range(1, 20):
@@ -72,10 +72,11 @@ def test_fresh_points_are_new_on_every_draw_and_not_the_checkers():
     spec = EXERCISES["hat_fifth"].answer
     rng = np.random.default_rng()
     one, two = verify.fresh_points(spec, rng), verify.fresh_points(spec, rng)
-    seeded = E.points("hat_fifth", spec)
+    seeded, _ = E.points("hat_fifth", spec)
     assert set(one) == set(seeded)
     for s in one:
-        assert not np.allclose(one[s], two[s]) and not np.allclose(one[s], seeded[s])
+        n = min(len(one[s]), len(seeded[s]))
+        assert not np.allclose(one[s], two[s]) and not np.allclose(one[s][:n], seeded[s][:n])
 
 
 @pytest.mark.parametrize(
@@ -179,7 +180,7 @@ def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_c
     from grader import course
 
     names = course.write_course(tmp_path / "c")
-    assert names == ["ps01", "ps02", "ps03", "ps04"]
+    assert names == [p.name[:4] for p in sorted((ROOT / "problem_sets").glob("ps*.ipynb"))]
     config = (tmp_path / "c" / "nbgrader_config.py").read_text()
     for word in ("ConfinedExecute", "VerifyRecords", "GuardCells", "ConfinedKernelManager.hide"):
         assert word in config

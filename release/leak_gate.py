@@ -204,11 +204,29 @@ def _line_of(text, index):
     return text.count("\n", 0, index) + 1, line.strip()[:120]
 
 
+# An answer record (course_lib.record) that the student's check judged right: an executed
+# instructor notebook holds one per exercise, the worked answer in sympy's srepr.
+RECORD = re.compile(r"application/vnd\.rotations-course\.answer\+json")
+RIGHT = "\u2713"  # ✓, the verdict line of a right answer
+
+
+def _right_records(text):
+    """Indices of answer records in ``text`` whose verdict is ✓ (within the same output)."""
+    for m in RECORD.finditer(text):
+        window = text[m.start() : m.start() + 4000]
+        if RIGHT in window or "\\u2713" in window:
+            yield m.start()
+
+
 def scan_data(name, data, needles, report):
     """Search one file's bytes; append a hit per needle or marker found, one per line."""
     report.bytes += len(data)
     seen = set()
+    outputs = name.endswith((".ipynb", ".html"))  # where notebook outputs are stored or shown
     for text in _texts(name, data):
+        for index in _right_records(text) if outputs else ():
+            number, line = _line_of(text, index)
+            report.hits.append(f"{name}:{number}: the record of a right answer: {line}")
         for m in MARKER.finditer(text):
             number, line = _line_of(text, m.start())
             if ("marker", number) not in seen:

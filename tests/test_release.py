@@ -227,6 +227,16 @@ def test_planted_leak_in_a_file_of_the_edition_names_file_and_line(copy, needles
     assert any(h.startswith("student/course_lib/so3.py:10: solution line of ") for h in hits), hits
 
 
+def test_regression_an_executed_problem_set_with_right_answer_records_is_found(copy, needles):
+    """An executed instructor problem set holds, in each check cell's output, the record of the
+    worked answer (sympy srepr): shipping one gives the answers away without a solution line."""
+    executed = ROOT / "problem_sets" / "ps03_exponential_coordinates.ipynb"
+    target = copy / "student" / "problem_sets" / executed.name
+    target.write_bytes(executed.read_bytes())
+    hits = _gate(copy / "student", copy / "dist", copy / "site", needles)
+    assert any(f"{executed.name}:" in h and "record of a right answer" in h for h in hits), hits
+
+
 def test_planted_leak_only_in_the_history_is_found(copy, needles):
     student = copy / "student"
     (student / "scratch.py").write_text(a_solution_line(needles) + "\n")

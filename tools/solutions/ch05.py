@@ -29,7 +29,7 @@ answer_proper_euler_angles = [alpha, beta, gamma]  # (−π/2, 2π/3, π/6)""",
 phi = sp.pi / 6  # roll 30°, pitch 90°, yaw 0
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
 Ry = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])  # R_y(90°)
-e_x, e_y, e_z = sp.eye(3)[:, 0], sp.eye(3)[:, 1], sp.eye(3)[:, 2]
+e_x, e_y, e_z = (sp.eye(3)[:, k] for k in range(3))  # the coordinate axes
 yaw_col, pitch_col, roll_col = Rx.T * Ry.T * e_z, Rx.T * e_y, e_x  # yaw_col = −roll_col
 n = roll_col.cross(pitch_col)
 answer_unreachable_omega = list(n / n.norm())  # (0, 1/2, √3/2)""",

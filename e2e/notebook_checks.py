@@ -130,15 +130,19 @@ def check_dom(page, state, problems, timeout):
     cell with an image, an HTML output or a widget, is scrolled into view as a student would
     and looked at there (polled until it settles, within ``timeout`` for the whole notebook).
     """
-    deadline = time.monotonic() + timeout
+    t0 = time.monotonic()
+    deadline = t0 + timeout
+    stops = page.evaluate(js("sweep"))
     dom = page.evaluate(js("dom"), None)
     if dom["n"] != len(state["cells"]):
         problems.append(f"{dom['n']} cells on the page, {len(state['cells'])} in the model")
         return dom
     shown = {d["i"]: d for d in dom["cells"]}
+    visited = 0
     for i, cell in enumerate(state["cells"]):
         if not cell_problems(i, cell, shown[i], in_view=False) and not needs_view(shown[i]):
             continue
+        visited += 1
         page.evaluate(js("scroll_to_cell"), i)
         cell_deadline = min(deadline, time.monotonic() + CELL_SETTLE_SECONDS)
         while True:
@@ -150,6 +154,10 @@ def check_dom(page, state, problems, timeout):
         problems.extend(found)
     dom = page.evaluate(js("dom"), [])
     dom["cells"] = [shown[i] for i in range(len(state["cells"]))]
+    log(
+        f"  looked at the page: scrolled through it ({stops} screens), then {visited} cell(s) "
+        f"in view, {time.monotonic() - t0:.1f} s"
+    )
     for text in dom["stderr"]:
         problems.append(f"error/stderr shown on the page: {text[:300]!r}")
     for src in dom["broken"]:
@@ -235,7 +243,8 @@ def screenshot(page, path):
         if geo["scrollHeight"] <= geo["clientHeight"]:
             page.screenshot(path=str(path), full_page=True)
             return
-        stack_tiles(page, geo).save(path, optimize=True)
+        # compress_level=1: the sheet is big, and a full zlib pass on it took seconds of CPU.
+        stack_tiles(page, geo).save(path, compress_level=1)
     finally:
         page.set_viewport_size(VIEWPORT)
 
@@ -249,7 +258,7 @@ def stack_tiles(page, geo):
     while offset < total:
         geo = page.evaluate(js("scroller"), offset)
         page.wait_for_timeout(400)
-        shot = Image.open(io.BytesIO(page.screenshot()))
+        shot = Image.open(io.BytesIO(page.screenshot(type="jpeg", quality=90)))
         skip = offset - geo["scrollTop"]  # the last tile stops short: drop what was shot twice
         if offset == 0:
             pieces.append(shot.crop((0, 0, shot.width, top)))  # menu bar and toolbar
@@ -274,13 +283,17 @@ def open_and_run(page, server, rel_path, problems, timeout, expect_folds=False):
     t0 = time.monotonic()
     wait_for_open(page, rel_path, timeout=90)
     check_overlays(page, problems, "after opening")
+    t1 = time.monotonic()
     opened = page.evaluate(js("state"))
     n_players = check_players(page, opened, problems, "on opening, before any cell runs")
     n_folds = check_folds(page, problems)
     if expect_folds and not n_folds:
         problems.append("no folded heading found in a notebook made to have folds")
-    if n_players or n_folds:
-        log(f"  on opening: {n_players} animation player(s), {n_folds} folded heading(s) checked")
+    log(
+        f"  opened in {t1 - t0:.1f} s; checked {n_players} animation player(s) and {n_folds} "
+        f"folded heading(s) in {time.monotonic() - t1:.1f} s"
+    )
+    t0 = time.monotonic()
     page.evaluate(js("run_all"))
     state = wait_for_run(page, timeout)
     n_code = sum(1 for c in state["cells"] if c["type"] == "code")
@@ -343,8 +356,10 @@ def finish_page(page, shot, problems):
     """Screenshot the page, shut its kernel down and close it (a failure here is a problem too,
     but must not hide the ones found before)."""
     try:
+        t0 = time.monotonic()
         screenshot(page, shot)
-        log(f"  screenshot {shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot}")
+        name = shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot
+        log(f"  screenshot {name} ({time.monotonic() - t0:.1f} s)")
     except Exception as exc:
         problems.append(f"screenshot failed: {exc}")
     try:

@@ -22,6 +22,8 @@ MAX_SCREENSHOT_HEIGHT = 16000  # Chromium's texture limit is a little above this
 NO_START_SECONDS = 40
 # How long one cell scrolled into view may take to typeset and load its images.
 CELL_SETTLE_SECONDS = 20
+# Cells queued while the kernel says idle this long: the queued cells will never run.
+IDLE_STALL = 30
 MATH_MARKERS = ("$", "\\(", "\\[", "\\begin{")
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
@@ -70,6 +72,7 @@ def wait_for_run(page, timeout):
     """Wait until every non-empty code cell ran (or one failed) and the kernel is idle."""
     stable = {"n": 0}
     start = time.monotonic()
+    progress = {"ran": -1, "since": start}
 
     def done():
         state = page.evaluate(js("state"))
@@ -83,6 +86,14 @@ def wait_for_run(page, timeout):
         errored = any(o["type"] == "error" for c in code for o in c["outputs"])
         finished = all(c["count"] is not None for c in code)
         busy = state["kernel"] != "idle" or any(c["state"] == "running" for c in code)
+        ran = sum(c["count"] is not None for c in code)
+        if ran != progress["ran"] or state["kernel"] != "idle":
+            progress.update(ran=ran, since=time.monotonic())
+        elif not (finished or errored) and time.monotonic() - progress["since"] > IDLE_STALL:
+            raise KernelStalled(
+                f"the kernel is idle and no cell has run for {IDLE_STALL} s, yet "
+                f"{len(code) - ran} cell(s) are still queued"
+            )
         if (finished or errored) and not busy:
             stable["n"] += 1
         else:
@@ -301,8 +312,12 @@ def open_and_run(page, server, rel_path, problems, timeout, expect_folds=False):
     return state
 
 
-def check_notebook(context, server, rel_path, out_dir, timeout, expect_folds=False):
+def check_notebook(
+    context, server, rel_path, out_dir, timeout, expect_folds=False, all_screenshots=False
+):
     """Open, run and check one notebook (``expect_folds``: it must have a folded heading).
+    A full-page screenshot is saved when it fails, or always with ``all_screenshots`` (each
+    takes 10-25 s on a loaded 2-core machine: a third of the run for all of them).
 
     Returns the problems found (empty: passed), whether the kernel stalled, and the slider
     release -> redrawn figure latencies measured (ms).
@@ -345,7 +360,8 @@ def check_notebook(context, server, rel_path, out_dir, timeout, expect_folds=Fal
         problems.append(f"browser automation failed: {str(exc).splitlines()[0]}")
     finally:
         problems.extend(f"JavaScript error on the page: {e[:300]}" for e in page_errors)
-        finish_page(page, out_dir / f"{Path(rel_path).stem}.png", problems)
+        shot = out_dir / f"{Path(rel_path).stem}.png"
+        finish_page(page, shot if problems or all_screenshots else None, problems)
         context.remove_listener("request", on_request)
         for url in outside_requests(urls):
             problems.append(f"a request leaves the loopback server: {url}")
@@ -353,13 +369,17 @@ def check_notebook(context, server, rel_path, out_dir, timeout, expect_folds=Fal
 
 
 def finish_page(page, shot, problems):
-    """Screenshot the page, shut its kernel down and close it (a failure here is a problem too,
-    but must not hide the ones found before)."""
+    """Screenshot the page (unless ``shot`` is None), shut its kernel down and close it (a
+    failure here is a problem too, but must not hide the ones found before)."""
     try:
+        if shot is None:
+            raise LookupError("no screenshot wanted")
         t0 = time.monotonic()
         screenshot(page, shot)
         name = shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot
         log(f"  screenshot {name} ({time.monotonic() - t0:.1f} s)")
+    except LookupError:
+        pass
     except Exception as exc:
         problems.append(f"screenshot failed: {exc}")
     try:

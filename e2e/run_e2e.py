@@ -30,7 +30,8 @@ notebook; by default ``notebooks/`` (the chapters, whatever there are) and ``pro
    is scrolled into view and looked at there, as a student would;
 5. checks that no request of the browser (page, workers, websockets) left the loopback server
    while the notebook was open, naming the URL of any that did;
-6. saves a full-page screenshot to ``build/e2e/<notebook>.png``.
+6. saves a full-page screenshot of a notebook that failed (of every notebook with
+   ``--screenshots``) to ``build/e2e/<notebook>.png``, and one of each explorer.
 
 A notebook that fails is retried once on a new lab: a new server (own copy, own kernels) and a
 new browser profile, nothing kept from the failed attempt; the log says so and says what the
@@ -82,6 +83,11 @@ def parse_args(argv):
         help="folders of .ipynb files or single notebooks (default: notebooks/ problem_sets/)",
     )
     parser.add_argument(
+        "--screenshots",
+        action="store_true",
+        help="a full-page screenshot of every notebook (default: of those that fail)",
+    )
+    parser.add_argument(
         "--no-fixtures",
         action="store_true",
         help="leave out the test's own fixture notebook (folded headings)",
@@ -122,13 +128,13 @@ class Lab:
     everything they wrote and returns the cleanup problems (a server or kernel left running).
     """
 
-    def __init__(self, pw, paths, fixtures=True):
+    def __init__(self, pw, paths, fixtures=True, all_screenshots=False):
         self.tmp = Path(tempfile.mkdtemp(prefix="course-e2e-"))
         self.server = self.context = None
         try:
             work = self.tmp / "root"
             self.notebooks, self.fixtures = stage(paths, work, fixtures)
-            self.paths = paths
+            self.paths, self.all_screenshots = paths, all_screenshots
             self.server = Server(self.tmp, work)
             self.server.wait_ready()
             self.context = pw.chromium.launch_persistent_context(
@@ -149,7 +155,13 @@ class Lab:
         """Check one notebook here: its problems, whether the kernel stalled, the latencies."""
         try:
             return check_notebook(
-                self.context, self.server, nb, out_dir, timeout, expect_folds=nb in self.fixtures
+                self.context,
+                self.server,
+                nb,
+                out_dir,
+                timeout,
+                expect_folds=nb in self.fixtures,
+                all_screenshots=self.all_screenshots,
             )
         finally:
             self.server.note_kernels()
@@ -186,12 +198,12 @@ def check_with_retry(pw, lab, nb, out_dir, timeout):
     log(f"  the server saw: {lab.server.report()}")
     log("  retrying once on a new JupyterLab server with a new browser profile")
     cleanup = lab.close()
-    lab = Lab(pw, lab.paths, bool(lab.fixtures))
+    lab = Lab(pw, lab.paths, bool(lab.fixtures), lab.all_screenshots)
     problems, _, latencies = lab.check(nb, out_dir, timeout)
     return cleanup + problems, latencies, lab
 
 
-def run_all(paths, fixtures, out_dir, timeout):
+def run_all(paths, fixtures, out_dir, timeout, all_screenshots):
     """Start the server and the browser, check every notebook, stop everything.
 
     Returns {notebook: problems} and the slider latencies of all notebooks (ms)."""
@@ -202,7 +214,7 @@ def run_all(paths, fixtures, out_dir, timeout):
     try:
         with sync_playwright() as pw:
             try:
-                lab = Lab(pw, paths, fixtures)
+                lab = Lab(pw, paths, fixtures, all_screenshots)
                 notebooks = lab.notebooks + lab.fixtures
                 log(f"{len(notebooks)} notebook(s)")
                 for nb in notebooks:
@@ -238,7 +250,7 @@ def report(results, latencies, out_dir):
     if failed:
         log(f"{len(failed)} of {len(results)} failed")
         return 1
-    log(f"all {len(results)} notebook(s) passed; screenshots in {out_dir}")
+    log(f"all {len(results)} notebook(s) passed; screenshots (if any) in {out_dir}")
     return 0
 
 
@@ -256,7 +268,9 @@ def main(argv=None):
     out_dir.mkdir(parents=True, exist_ok=True)
     # SIGTERM (e.g. from a CI timeout) unwinds through the finally blocks like Ctrl-C does.
     signal.signal(signal.SIGTERM, _interrupt)
-    results, latencies = run_all(paths, not args.no_fixtures, out_dir, args.timeout)
+    results, latencies = run_all(
+        paths, not args.no_fixtures, out_dir, args.timeout, args.screenshots
+    )
     return report(results, latencies, out_dir)
 
 

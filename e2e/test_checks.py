@@ -117,3 +117,10 @@ def test_stage_copies_folders_and_single_notebooks(tmp_path):
     assert fixtures == [FOLDS_NOTEBOOK] and (root / FOLDS_NOTEBOOK).is_file()
     assert not (root / "notebooks" / "notes.txt").exists()
     assert stage([src / "ps"], tmp_path / "root2", False) == (["ps/ps01.ipynb"], [])
+
+
+def test_fold_with_nothing_under_it():
+    """Regression: a 'Going deeper: Errata' heading folded with its text in its own cell and the
+    next heading right after it; JupyterLab then hides nothing and shows no button."""
+    found = fold_problems(fold(True, [], button=False), "collapsed")
+    assert len(found) == 1 and "hides nothing" in found[0]

@@ -86,6 +86,11 @@ def fold_problems(fold, when, excused=()):
     if fold["level"] == 0:
         return [f"cell {i}: folded in its metadata but not a heading (nothing to click)"]
     hidden = [u["i"] for u in fold["under"] if u["hidden"] and u["i"] not in excused]
+    if not fold["under"]:
+        return [
+            f"cell {i}: folded heading hides nothing: no cell under it before the next heading "
+            "(text in the heading's own cell stays shown; put it in cells of its own)"
+        ]
     if when == "collapsed":
         if not fold["collapsed"]:
             out.append(f"cell {i}: heading folded in its metadata but shown expanded on opening")

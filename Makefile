@@ -46,8 +46,9 @@ exercises: $(STAMP)
 	$(BIN)/python tools/sync_exercises.py
 	$(BIN)/python tools/notebooks.py --apply problem_sets/ps*.ipynb
 
-# The course website in build/site/ from the student copies (SOLUTIONS=1: the instructor's);
-# its tools (site/requirements.txt, MathJax from npm) are installed on first use only.
+# The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
+# build/site-instructor/ with a banner on every page (never over the student site). Its tools
+# (site/requirements.txt, MathJax from npm) are installed on first use only.
 SITE_STAMP := $(VENV)/.site-installed
 SOLUTIONS  ?=
 $(SITE_STAMP): $(STAMP) site/requirements.txt
@@ -57,18 +58,29 @@ $(SITE_STAMP): $(STAMP) site/requirements.txt
 site: $(SITE_STAMP)
 	$(BIN)/python site/build.py $(if $(SOLUTIONS),--solutions)
 
-# Builds the student site, then opens its pages in headless Chromium (/usr/bin/chromium).
+# Builds the student site, then opens its pages in headless Chromium (/usr/bin/chromium): every
+# figure on its page, no page wider than 1200 px, no request leaving the site, no solution.
 site-test: $(SITE_STAMP)
 	$(BIN)/python site/build.py
 	$(BIN)/python -m pytest site/test_site.py -q
+
+# Everything students get, in build/release/: student/ (the student edition, a git repository of
+# its own), dist/ (the wheel), site/ (the website); the leak gate scans all three and fails the
+# release on any worked-solution line, nbgrader marker or solutions folder (release/).
+.PHONY: release
+release: $(SITE_STAMP)
+	$(BIN)/python release/make_release.py
 
 # Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium): outputs,
 # math, figures, every slider and a mouse drag of each explorer's 3D view; screenshots in build/e2e/.
 e2e: $(STAMP)
 	$(BIN)/python e2e/run_e2e.py
 
+# Student copies (solutions replaced by stubs, outputs cleared) of the chapters and, when there,
+# the problem sets, in build/student/; `make release` builds the whole student edition.
 student: $(STAMP)
 	$(BIN)/python -m course_lib.student notebooks build/student --force
+	$(if $(wildcard problem_sets/*.ipynb),$(BIN)/python -m course_lib.student problem_sets build/student/problem_sets --force)
 
 # Speed against the reference (scipy) and of the exercise checks: CPU time, best of N, printed.
 bench: $(STAMP)
@@ -107,3 +119,16 @@ hub-load: $(HUB_STAMP) $(CHP_STAMP)
 
 clean:
 	rm -rf $(VENV) build
+
+# An nbgrader course directory for the problem sets (docs/grading.md): nbgrader_config.py with
+# the confined kernel and the grader's preprocessors, and source/psNN/ for every problem set.
+.PHONY: course bench-grade
+COURSE ?=
+course: $(STAMP)
+	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR"; exit 2; }
+	$(BIN)/python -m grader.course $(COURSE)
+
+# A class of 20 simulated students through `make course` and real nbgrader: autograde time
+# per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
+bench-grade: $(STAMP)
+	$(BIN)/python benchmarks/bench_grade.py --students 20 --jobs 2

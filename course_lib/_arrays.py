@@ -5,30 +5,32 @@ passes a string, a ragged list, a masked array, a matrix of the wrong size, a nu
 for float64 or a NaN gets the same kind of message everywhere: the argument's name, what was
 wrong and what was expected.
 
-==========================  ===================================================================
-helper                      returns
-==========================  ===================================================================
-:func:`as_float_array`      any shape, float64 (no finiteness check)
-:func:`as_finite_array`     any shape, float64, finite
-:func:`as_scalar`           one finite real number, as a Python float
-:func:`as_positive`         one finite real number > 0, as a Python float
-:func:`as_vector`           one finite n-vector, shape (n,)
-:func:`as_vector3`          one finite 3-vector, shape (3,)
-:func:`as_vectors`          finite 3-vectors, shape (..., 3)
-:func:`as_points`           one or more finite points of dimension d, shape (k, d)
-:func:`as_matrix`           one finite n x n matrix, shape (n, n)
-:func:`as_direction`        one non-zero 3-vector, normalised (overflow-safe)
-:func:`as_unit_axes`        unit 3-vectors within ``tol``, shape (..., 3)
-:func:`as_matrices`         finite n x n matrices, shape (..., n, n)
-:func:`as_square_matrices`  finite square matrices of any size, shape (..., n, n)
-:func:`as_angles`           finite angles of any shape
-:func:`as_count`            a Python int >= a minimum
-:func:`as_str`              a str (labels, titles)
-:func:`as_labels`           one str or None per item, as a list
-:func:`as_choice`           one of a few named options (a str)
-:func:`broadcast_batch`     the common batch shape of several arguments, or a ValueError
-                            naming each argument and its shape
-==========================  ===================================================================
+============================  ===================================================================
+helper                        returns
+============================  ===================================================================
+:func:`as_float_array`        any shape, float64 (no finiteness check)
+:func:`as_finite_array`       any shape, float64, finite
+:func:`as_scalar`             one finite real number, as a Python float
+:func:`as_positive`           one finite real number > 0, as a Python float
+:func:`as_vector`             one finite n-vector, shape (n,)
+:func:`as_vector3`            one finite 3-vector, shape (3,)
+:func:`as_vectors`            finite 3-vectors, shape (..., 3)
+:func:`as_points`             one or more finite points of dimension d, shape (k, d)
+:func:`as_matrix`             one finite n x n matrix, shape (n, n)
+:func:`as_direction`          one non-zero 3-vector, normalised (overflow-safe)
+:func:`as_unit_axes`          unit 3-vectors within ``tol``, shape (..., 3)
+:func:`as_quaternions`        finite quaternions (w, x, y, z), shape (..., 4)
+:func:`as_unit_quaternions`   unit quaternions within ``tol``, shape (..., 4)
+:func:`as_matrices`           finite n x n matrices, shape (..., n, n)
+:func:`as_square_matrices`    finite square matrices of any size, shape (..., n, n)
+:func:`as_angles`             finite angles of any shape
+:func:`as_count`              a Python int >= a minimum
+:func:`as_str`                a str (labels, titles)
+:func:`as_labels`             one str or None per item, as a list
+:func:`as_choice`             one of a few named options (a str)
+:func:`broadcast_batch`       the common batch shape of several arguments, or a ValueError
+                              naming each argument and its shape
+============================  ===================================================================
 
 Examples
 --------
@@ -269,15 +271,45 @@ def as_unit_axes(x, name="w", tol=TOL, hint="divide it by its norm"):
 
     The message names the worst norm and its batch index, and ends with ``hint``.
     """
-    w = as_vectors(x, name)
-    tol = check_tol(tol)
+    return _require_unit(as_vectors(x, name), name, check_tol(tol), "a unit vector", hint)
+
+
+def as_quaternions(x, name="q"):
+    """A finite float64 array of shape (..., 4): quaternions, scalar first (w, x, y, z)."""
+    arr = as_float_array(x, name)
+    if arr.ndim == 0 or arr.shape[-1] != 4:
+        raise ValueError(
+            f"{name} must have shape (..., 4) (quaternions (w, x, y, z), scalar first), "
+            f"got shape {arr.shape}"
+        )
+    return require_finite(arr, name)
+
+
+def as_unit_quaternions(x, name="q", tol=TOL):
+    r"""Unit quaternions, :math:`|\|q\| - 1| \le` tol, as a float64 array of shape (..., 4).
+
+    >>> as_unit_quaternions([1, 0, 0, 0], "q")
+    array([1., 0., 0., 0.])
+    >>> as_unit_quaternions([1, 1, 0, 0], "q")
+    Traceback (most recent call last):
+    ...
+    ValueError: q must be a unit quaternion: ‖q‖ = 1.41421, |‖q‖ − 1| = 4.1e-01 > TOL = 1e-09;
+    divide it by its norm (a rotation is a quaternion of norm 1)
+    """
+    hint = "divide it by its norm (a rotation is a quaternion of norm 1)"
+    return _require_unit(as_quaternions(x, name), name, check_tol(tol), "a unit quaternion", hint)
+
+
+def _require_unit(w, name, tol, what, hint):
+    """w itself if every row along the last axis has norm 1 within tol, else a ValueError that
+    names the worst norm and its batch index, and ends with ``hint``."""
     norm = vector_norm(w)
     off = np.abs(norm - 1.0)
     if not np.all(off <= tol):
         worst = np.unravel_index(np.argmax(off), off.shape) if off.ndim else ()
         where = f" at batch index {tuple(int(i) for i in worst)}" if worst else ""
         raise ValueError(
-            f"{name} must be a unit vector: ‖{name}‖ = {float(norm[worst]):.6g}, |‖{name}‖ − 1| = "
+            f"{name} must be {what}: ‖{name}‖ = {float(norm[worst]):.6g}, |‖{name}‖ − 1| = "
             f"{fmt_residual(float(off[worst]), tol)} > {tol_label(tol)}{where}; {hint}"
         )
     return w

@@ -35,7 +35,9 @@ wait for its reply until the timeout (jupyter/nbclient#312).
 """
 
 import base64
+import html
 import io
+import re
 import tempfile
 import warnings
 from pathlib import Path
@@ -485,6 +487,18 @@ def _canvas_figure(figsize):
     return fig
 
 
+def _explorer_figure():
+    """(figure, None) on a live ipympl canvas, or (plain figure, why) where ipympl is missing."""
+    try:
+        return _canvas_figure(_EXPLORER_SIZE), None
+    except ImportError as err:
+        why = (
+            f"A still picture: the live explorer needs {err.name or 'ipympl'}, which is not "
+            "installed here (pip install ipympl, then restart the kernel)."
+        )
+        return Figure(figsize=_EXPLORER_SIZE, dpi=plotting.DPI), why
+
+
 def _angles_line(w, theta):
     return rf"$\omega$ = ({w[0]:.2f}, {w[1]:.2f}, {w[2]:.2f}),  $\theta$ = {theta:.2f} rad"
 
@@ -516,7 +530,7 @@ class Explorer(ipywidgets.VBox):
         ranges = (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)
         self.sliders = {n: _slider(v, r, n) for n, v, r in zip(names, angles, ranges)}
         elev, azim = (_view_angle(a, n) for a, n in zip(camera, ("elev", "azim")))
-        self.figure = _canvas_figure(_EXPLORER_SIZE)
+        self.figure, self.why_still = _explorer_figure()
         self.figure.subplots_adjust(left=0.0, right=0.94, bottom=0.02, top=0.86)
         self.ax = self.figure.add_subplot(projection="3d")
         self._drawn = None
@@ -524,12 +538,17 @@ class Explorer(ipywidgets.VBox):
         self._draw, self._pick, self._title, self._lim = draw, pick, title, lim
         self._readout = readout
         self.readout = ipywidgets.HTMLMath() if readout else None
-        children = [*self.sliders.values(), self.figure.canvas]
-        super().__init__(children=children + ([self.readout] if readout else []))
+        children = [*self.sliders.values(), self.figure.canvas] if self.live else []
+        super().__init__(children=children + ([self.readout] if readout and self.live else []))
         self._redraw(elev, azim)
         self._update_readout()
         for slider in self.sliders.values():
             slider.observe(self._on_release, names="value")
+
+    @property
+    def live(self):
+        """Whether the figure is a live widget (False: only its still picture can be shown)."""
+        return self.why_still is None
 
     @property
     def values(self):
@@ -569,9 +588,18 @@ class Explorer(ipywidgets.VBox):
         return _palette_png(self.figure)
 
     def _repr_mimebundle_(self, **kwargs):
+        png = base64.b64encode(self.snapshot()).decode("ascii")
+        if not self.live:  # the still picture, and one line saying why
+            alt = html.escape(self.description, quote=True)
+            return {
+                "text/plain": f"{self.description}\n{self.why_still}",
+                "image/png": png,
+                "text/html": f'<img src="data:image/png;base64,{png}" alt="{alt}">'
+                f"<p><em>{html.escape(self.why_still)}</em></p>",
+            }
         data = super()._repr_mimebundle_(**kwargs)
         data["text/plain"] = self.description
-        data["image/png"] = base64.b64encode(self.snapshot()).decode("ascii")
+        data["image/png"] = png
         return data
 
 
@@ -738,8 +766,10 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
 
     Built with matplotlib's JavaScript player (``HTMLWriter``: the frames are palette PNGs
     embedded in the page, no ffmpeg); the figure is closed so no static copy is displayed as
-    well. The default frames are :data:`SPIN_PIXELS` = 360 pixels wide, the smallest at
-    which the title and the labels can be read.
+    well. The player loads nothing from outside the page (its buttons are characters, not
+    Font Awesome icons from a CDN) and shows the first frame before any script runs. The
+    default frames are :data:`SPIN_PIXELS` = 360 pixels wide, the smallest at which the title
+    and the labels can be read.
 
     Parameters
     ----------
@@ -770,8 +800,10 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
     Examples
     --------
     >>> html = spin_animation(frames=3)
-    >>> html.data.count("data:image/png;base64")
-    3
+    >>> html.data.count("data:image/png;base64")  # the three frames, and the first as the still
+    4
+    >>> "font-awesome" in html.data or "https://" in html.data  # nothing from outside the page
+    False
     """
     from IPython.display import HTML
 
@@ -826,4 +858,39 @@ def _html_player(anim, fps, dpi):
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp, "spin.html")
         anim.save(str(path), writer=writer, dpi=dpi)
-        return path.read_text()
+        return _offline_player(path.read_text())
+
+
+# matplotlib's player draws its buttons with Font Awesome icons, linked from a CDN: a page that
+# shows it would ask a server outside the course. The same buttons as plain characters.
+_ICONS = {
+    "fa-minus": "&minus;",
+    "fa-plus": "+",
+    "fa-fast-backward": "&#x23EE;",
+    "fa-step-backward": "&#x23F4;&#x2223;",
+    "fa-play fa-flip-horizontal": "&#x23F4;",
+    "fa-pause": "&#x23F8;",
+    "fa-play": "&#x23F5;",
+    "fa-step-forward": "&#x2223;&#x23F5;",
+    "fa-fast-forward": "&#x23ED;",
+}
+_FA_LINK = re.compile(r"<link[^>]*font-awesome[^>]*>\s*", re.S)
+_FA_ICON = re.compile(r'<i class="fa (fa-[a-z-]+(?: fa-flip-horizontal)?)"></i>')
+_FIRST_FRAME = re.compile(r'frames\[0\] = "(data:image/png;base64,[A-Za-z0-9+/=\\\n]+)"')
+_PLAYER_IMG = re.compile(r'<img id="(_anim_img[0-9a-f]+)">')
+
+
+def _offline_player(html):
+    """The player with no request outside the page, showing its first frame before any script.
+
+    The Font Awesome link goes, its icons become characters (:data:`_ICONS`); the ``<img>``
+    gets frame 0 as its ``src``, so the picture is there where scripts do not run (an untrusted
+    notebook, a viewer) and before the player starts.
+    """
+    html = _FA_LINK.sub("", html)
+    html = _FA_ICON.sub(lambda m: f'<span aria-hidden="true">{_ICONS[m.group(1)]}</span>', html)
+    first = _FIRST_FRAME.search(html)
+    if first:
+        src = first.group(1).replace("\\\n", "")
+        html = _PLAYER_IMG.sub(lambda m: f'<img id="{m.group(1)}" src="{src}" alt="">', html)
+    return html

@@ -70,6 +70,9 @@ _UNDERFLOW = 1e-150
 # The most terms exp_series adds: beyond a few hundred every further term is below rounding
 # for any matrix whose series can be summed accurately in float64.
 _MAX_TERMS = 1000
+# λ = 1 + cos θ. Below θ = π/2 − 1e-6 (λ > 1 + 1e-6) no entry of R comes within 5e-13 of ±1
+# (R_ii ≥ cos θ > 0, and |R_ij| ≤ sin θ for i ≠ j since e_i ⊥ e_j), so rounding cannot pass ±1.
+_NEAR_QUARTER = 1.0 + 1e-6
 _F64 = np.dtype(np.float64)
 _NUMBER = (float, int)
 
@@ -270,6 +273,9 @@ def _quaternion_rows(u, v, out):
     np.add(yz, ux, out=out[7])
     np.add(xx, yy, out=t)
     np.subtract(1.0, t, out=out[8])
+    # Every entry of a rotation lies in [−1, 1]; at θ = π about e1, λṽ² rounds to 2 + 4 ulp and
+    # R_11 = 1 − λṽ² to −1.0000000000000009 (arccos of it is NaN): clipping only removes error.
+    np.clip(out, -1.0, 1.0, out=out)
 
 
 def _exp_rotvec(r):
@@ -305,19 +311,20 @@ def _exp_one(x, y, z):
     ux, uy, uz = lam * vx, lam * vy, lam * vz
     xx, yy, zz = ux * vx, uy * vy, uz * vz
     xy, xz, yz = ux * vy, ux * vz, uy * vz
-    return np.array(
-        (
-            1.0 - (yy + zz),
-            xy - uz,
-            xz + uy,
-            xy + uz,
-            1.0 - (xx + zz),
-            yz - ux,
-            xz - uy,
-            yz + ux,
-            1.0 - (xx + yy),
-        )
-    ).reshape(3, 3)
+    entries = (
+        1.0 - (yy + zz),
+        xy - uz,
+        xz + uy,
+        xy + uz,
+        1.0 - (xx + zz),
+        yz - ux,
+        xz - uy,
+        yz + ux,
+        1.0 - (xx + yy),
+    )
+    if lam <= _NEAR_QUARTER:  # clipped to [−1, 1] as in _exp_rows, where rounding can pass ±1
+        entries = [min(max(e, -1.0), 1.0) for e in entries]
+    return np.array(entries).reshape(3, 3)
 
 
 def _exp_single(w, theta, tol):
@@ -344,16 +351,16 @@ def _exp_single(w, theta, tol):
 def exp(w, theta=None, tol=TOL):
     r"""Rodrigues' formula: the rotation matrix :math:`e^{\hat\omega\theta}`.
 
-    With one argument, ``w`` is a rotation vector :math:`r = \omega\theta` (unit axis times
-    angle, the exponential coordinates of the rotation) and
+    With ``theta``, ``w`` must be a unit axis :math:`\omega` and the result is the notes'
 
     .. math::
 
-        e^{\hat r} = I + \frac{\sin\|r\|}{\|r\|}\hat r + \frac{1-\cos\|r\|}{\|r\|^2}\hat r^2 .
+        R(\omega, \theta) = e^{\hat\omega\theta}
+        = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2 \qquad \text{(eq. 159)}.
 
-    With ``theta``, ``w`` must be a unit axis :math:`\omega` and the result is the notes'
-    :math:`R(\omega, \theta) = e^{\hat\omega\theta}
-    = I + \sin\theta\,\hat\omega + (1-\cos\theta)\,\hat\omega^2` (eq. 159).
+    With one argument, ``w`` is a rotation vector :math:`r = \omega\theta`, the exponential
+    coordinates of the rotation: the result is :math:`R(\omega, \theta)` for its unit axis
+    :math:`\omega` and its angle :math:`\theta \ge 0` (and :math:`I` for :math:`r = 0`).
 
     Parameters
     ----------
@@ -532,9 +539,11 @@ def _far_axes(X, c2, v, theta, want_axis):
 def _tiny_rows(v, s2, out, where, want_axis):
     """_log_rows for θ below _TINY: r = v / 2 (θ / sin θ = 1), the axis v / ‖v‖ (e3 for the
     identity, where every axis is right)."""
-    if want_axis:
-        zero = s2 == 0.0
-        u = v / np.where(zero, 1.0, s2)
+    if want_axis:  # v / ‖v‖ with ‖v‖ rounded to a subnormal is off by up to 15%: scale first
+        big = np.abs(v).max(axis=0)
+        zero = big == 0.0
+        u = v / np.where(zero, 1.0, big)
+        u /= np.sqrt(np.einsum("im,im->m", u, u))[None, :] + zero
         u[2, zero] = 1.0
     else:
         u = 0.5 * v
@@ -570,6 +579,17 @@ def _log_rows(X, v, out, theta, want_axis):
         out[:, far] = _far_axes(X, c2, v, theta[far], want_axis)
 
 
+def _unit_axis(v0, v1, v2):
+    """v / ‖v‖ for a tiny (even subnormal) v, scaled first so that ‖v‖ is not rounded to a
+    coarse subnormal; e3 for v = 0."""
+    big = max(abs(v0), abs(v1), abs(v2))
+    if big == 0.0:
+        return 0.0, 0.0, 1.0
+    v0, v1, v2 = v0 / big, v1 / big, v2 / big
+    norm = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
+    return v0 / norm, v1 / norm, v2 / norm
+
+
 def _log_one(X, tol, want_axis):
     """log (or axis, angle) of one matrix given as its 9 entries, Python floats; None if it is
     not a rotation within tol (the batch path then raises the ValueError). Same formulas as
@@ -587,7 +607,7 @@ def _log_one(X, tol, want_axis):
     if theta <= _FAR:  # up to 150°: r = θ v / sin θ
         if s < _TINY:  # 1 / sin θ overflows: θ / sin θ = 1; the identity's axis is e3
             if want_axis:
-                return ((v0 / s, v1 / s, v2 / s) if s else (0.0, 0.0, 1.0)), theta
+                return _unit_axis(v0, v1, v2), theta
             return (v0, v1, v2), theta
         k = (1.0 if want_axis else theta) / s
         return (k * v0, k * v1, k * v2), theta

@@ -167,7 +167,7 @@ def _clear_region(lines, words, stub, where, hint=""):
     return out, found
 
 
-def _clear_cell(cell, where):
+def _clear_cell(cell, where, clear_outputs=True):
     """Turn ``cell`` (a copy) into its student version, in place."""
     original = cell.source
     lines = list(enumerate(original.split("\n"), 1))
@@ -196,14 +196,14 @@ def _clear_cell(cell, where):
         cell.attachments = {k: v for k, v in cell.attachments.items() if k in kept}
         if not cell.attachments:
             del cell["attachments"]
-    if cell.cell_type == "code":
+    if cell.cell_type == "code" and (clear_outputs or cell.source != original):
         cell.outputs = []
         cell.execution_count = None
     for key in CELL_RUN_STATE:
         cell.get("metadata", {}).pop(key, None)
 
 
-def student_notebook(nb, name="notebook"):
+def student_notebook(nb, name="notebook", keep_outputs=False):
     r"""The student copy of one notebook (a new object; ``nb`` is not modified).
 
     Parameters
@@ -212,6 +212,9 @@ def student_notebook(nb, name="notebook"):
         A version 4 notebook.
     name : str
         Its name, used in error messages.
+    keep_outputs : bool, default False
+        Keep the outputs and execution counts of the cells before the first nbgrader cell (the
+        reading part of a chapter, for strict nbval); every later cell is cleared all the same.
 
     Returns
     -------
@@ -248,6 +251,10 @@ def student_notebook(nb, name="notebook"):
     for key in NOTEBOOK_RUN_STATE:
         new.metadata.pop(key, None)
     seen = {}
+    graded = [i for i, c in enumerate(new.cells) if c.get("metadata", {}).get("nbgrader")]
+    first_graded = 0
+    if keep_outputs:
+        first_graded = graded[0] if graded else len(new.cells)
     for i, cell in enumerate(new.cells):
         where = _where(name, i, cell)
         gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
@@ -257,7 +264,7 @@ def student_notebook(nb, name="notebook"):
                     f"{where}: grade_id {gid!r} repeats the one of cell {seen[gid]}"
                 )
             seen[gid] = i
-        _clear_cell(cell, where)
+        _clear_cell(cell, where, clear_outputs=i >= first_graded)
     return new
 
 
@@ -295,8 +302,22 @@ def _check_target(target, src, src_r, source_inodes, force):
             f"{target} is a link to a file of the source directory {src}; "
             "refusing to replace it (remove it first)"
         )
+    if _holds_solutions(target):
+        raise StudentNotebookError(
+            f"{target} holds solution regions (an instructor notebook); refusing to replace it, "
+            "with or without --force (are SRC_DIR and OUT_DIR the wrong way round?)"
+        )
     if not force:
         raise StudentNotebookError(f"{target} exists; use --force to overwrite")
+
+
+def _holds_solutions(path):
+    """Whether the file at ``path`` has a line with a solution marker (any text, read or not)."""
+    try:
+        text = path.read_bytes().decode("utf-8", errors="replace")
+    except OSError:
+        return False  # not readable: replacing its directory entry does not read it either
+    return "BEGIN SOLUTION" in text or "END SOLUTION" in text
 
 
 def _read_sources(src):
@@ -403,6 +424,23 @@ def _write_all(files, out):
     shutil.rmtree(stage, ignore_errors=True)
 
 
+def _resolved(path, what):
+    """``path`` with its links resolved, or a StudentNotebookError naming the trouble."""
+    try:
+        return path.resolve()
+    except (OSError, RuntimeError) as err:  # RuntimeError: a symlink loop (Python < 3.13)
+        trouble = "a symlink loop" if "loop" in str(err).lower() else str(err)
+        raise StudentNotebookError(f"{what} {path}: {trouble}") from None
+
+
+def _fs_error(err, out):
+    what = err.strerror or type(err).__name__
+    where = f" ({err.filename})" if err.filename else ""
+    return StudentNotebookError(
+        f"cannot write the student copies to {out}: {what}{where}; nothing was written"
+    )
+
+
 def make_student_notebooks(src_dir, out_dir, force=False):
     r"""Write a student copy of every notebook of ``src_dir`` into ``out_dir``, all or nothing.
 
@@ -426,8 +464,11 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     StudentNotebookError
         If ``src_dir`` is missing or holds no notebook, ``out_dir`` is ``src_dir`` or inside it
         (after resolving symlinks), a copy would replace a file without ``force``, a directory
-        or a link to a source file, a notebook is malformed (see :func:`student_notebook`), or
-        writing fails (full disk, permissions). Nothing is written then.
+        or a link to a source file, a notebook that holds solution regions (even with ``force``:
+        SRC_DIR and OUT_DIR swapped would otherwise replace the instructor's notebooks), a
+        notebook is malformed (see :func:`student_notebook`), or the file system is in the way
+        (a symlink loop, a file where a folder should be, no permission, a full disk). Nothing
+        is written then.
 
     Examples
     --------
@@ -438,7 +479,7 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     source directory notebooks; choose one outside it
     """
     src, out = Path(src_dir), Path(out_dir)
-    src_r, out_r = src.resolve(), out.resolve()
+    src_r, out_r = _resolved(src, "source directory"), _resolved(out, "output directory")
     if _is_relative_to(out_r, src_r):
         what = "is the source directory" if out_r == src_r else "is inside the source directory"
         raise StudentNotebookError(f"output directory {out} {what} {src}; choose one outside it")
@@ -446,20 +487,20 @@ def make_student_notebooks(src_dir, out_dir, force=False):
         raise StudentNotebookError(f"source directory {src} does not exist")
     if os.path.lexists(out) and not out.is_dir():
         raise StudentNotebookError(f"output path {out} exists and is not a directory")
-    files = {
-        path.name: _serialized(student_notebook(nb, str(path))) for path, nb in _read_sources(src)
-    }
+    try:
+        notebooks = _read_sources(src)
+    except OSError as err:
+        raise StudentNotebookError(f"cannot read {src}: {err.strerror or err}") from None
+    files = {path.name: _serialized(student_notebook(nb, str(path))) for path, nb in notebooks}
     try:
         source_inodes = _inodes(src)
         for name in files:
             _check_target(out / name, src, src_r, source_inodes, force)
         _write_all(files, out)
-    except OSError as err:
-        what = err.strerror or type(err).__name__
-        where = f" ({err.filename})" if err.filename else ""
-        raise StudentNotebookError(
-            f"cannot write the student copies to {out}: {what}{where}; nothing was written"
-        ) from None
+    except (OSError, RuntimeError) as err:
+        if isinstance(err, RuntimeError):  # a symlink loop met while resolving a target
+            raise StudentNotebookError(f"{out}: a symlink loop; nothing was written") from None
+        raise _fs_error(err, out) from None
     return [out / name for name in files]
 
 
@@ -481,6 +522,9 @@ def main(argv=None):
         return 2
     except KeyboardInterrupt:
         print("course_lib.student: error: interrupted; nothing was written", file=sys.stderr)
+        return 2
+    except (OSError, RuntimeError) as err:  # anything the checks above did not name
+        print(f"course_lib.student: error: {args.out_dir}: {err}", file=sys.stderr)
         return 2
     print(f"wrote {len(written)} student notebook(s) to {args.out_dir}")
     return 0

@@ -1,17 +1,21 @@
-"""Build the course website in build/site/ (``make site``; ``make site SOLUTIONS=1``).
+"""Build the course website (``make site``; ``make site SOLUTIONS=1``; ``make release``).
 
-1. The pages come from the student copies (``python -m course_lib.student``: solutions
-   replaced by stubs), or with ``--solutions`` from ``notebooks/`` as they are (instructors).
-2. Each chapter is prepared: the setup cell is dropped (the site needs no set-up), a line of
+1. The pages: the chapters (``notebooks/``) and the problem sets (``problem_sets/``, when there).
+   By default their student copies (``course_lib.student``: solutions replaced by stubs) into
+   ``build/site/``; ``--from DIR`` takes them as they are from a student edition (``make
+   release``: ``build/release/student``); ``--solutions`` takes the instructor's notebooks as
+   they are and writes to ``build/site-instructor/`` (never over the student site), with a
+   banner on every page.
+2. Each notebook is prepared: the setup cell is dropped (the site needs no set-up), a line of
    launch links is put under the title, stub and check cells are tagged ``raises-exception`` and
    ``remove-output`` so that executing does not stop on them and shows no traceback.
-3. Each chapter is executed and cleaned by tools/notebooks.py (no stall after widget cells,
-   palette PNGs); widget views are dropped (without a kernel a slider moves nothing; the
-   figure of its first position stays) and every figure gets alt text: the first sentence of
-   the markdown cell under it, the notebooks' one-line figure description.
+3. Each notebook is executed and cleaned by tools/notebooks.py (no stall after widget cells,
+   palette PNGs). An explorer's output keeps its still picture (the widget view goes: without a
+   kernel no slider moves anything) and gets one line under it saying why it is still; every
+   figure gets alt text: the first sentence of the markdown cell under it.
 4. Sphinx + myst-nb render the pages offline: MathJax comes from the npm package installed in
-   build/site-deps/, copied into the site's ``_static/``; so do the icons of matplotlib's
-   animation player (Font Awesome, which it links from a CDN).
+   build/site-deps/, copied into the site's ``_static/``; site/static/course.css keeps every
+   page within the window (wide formulas, code and outputs scroll inside their own box).
 """
 
 from __future__ import annotations
@@ -27,47 +31,88 @@ from pathlib import Path
 import nbformat
 
 ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT / "tools"))
 
 import course_links  # noqa: E402
+
 import notebooks as nbtool  # noqa: E402
 
 BUILD = ROOT / "build"
-SRC, OUT, DEPS = BUILD / "site-src", BUILD / "site", BUILD / "site-deps"
-# npm packages served from the site itself: MathJax, and the icons of matplotlib's animation
-# player (which links them from a CDN).
-MATHJAX, FONT_AWESOME = "mathjax@3.2.2", "font-awesome@4.7.0"
-FA_CDN = "https://maxcdn.bootstrapcdn.com/font-awesome/4.4.0/css/font-awesome.min.css"
-FA_LOCAL = "_static/font-awesome/css/font-awesome.min.css"
+DEPS = BUILD / "site-deps"
+MATHJAX = "mathjax@3.2.2"
 STUB = "raise NotImplementedError("
+FOLDERS = ("notebooks", "problem_sets")
+SIBLING_LINK = re.compile(r"\]\(\.\./(?:notebooks|problem_sets)/")  # a chapter <-> its problem set
+STILL_NOTE = (
+    "*A still picture of the explorer: its sliders and the 3D view you turn with the mouse need "
+    "a running Jupyter kernel; run this chapter yourself to use them.*"
+)
 
 
 def install_scripts():
-    """MathJax's es5 bundle and Font Awesome from npm, in build/site-deps/static/."""
+    """MathJax's es5 bundle from npm, in build/site-deps/static/, with the site's own CSS."""
     modules = DEPS / "node_modules"
-    if not (modules / "mathjax" / "es5" / "tex-chtml.js").is_file() or \
-            not (modules / "font-awesome" / "css").is_dir():
-        subprocess.run(["npm", "install", "--no-save", "--no-audit", "--no-fund",
-                        "--prefix", str(DEPS), MATHJAX, FONT_AWESOME], check=True)
+    if not (modules / "mathjax" / "es5" / "tex-chtml.js").is_file():
+        subprocess.run(
+            [
+                "npm",
+                "install",
+                "--no-save",
+                "--no-audit",
+                "--no-fund",
+                "--prefix",
+                str(DEPS),
+                MATHJAX,
+            ],
+            check=True,
+        )
     static = DEPS / "static"
     shutil.rmtree(static, ignore_errors=True)
-    shutil.copytree(modules / "mathjax" / "es5", static / "mathjax")
-    for part in ("css", "fonts"):
-        shutil.copytree(modules / "font-awesome" / part, static / "font-awesome" / part)
+    shutil.copytree(modules / "mathjax" / "es5", static / "mathjax", ignore=_unused_mathjax)
+    shutil.copy(HERE / "static" / "course.css", static / "course.css")
     return static
 
 
-def source_notebooks(solutions):
-    """Copy the chapters (student copies unless ``solutions``) to build/site-src/."""
-    shutil.rmtree(SRC, ignore_errors=True)
-    SRC.mkdir(parents=True)
-    if solutions:
-        for path in sorted((ROOT / "notebooks").glob("[0-9]*.ipynb")):
-            shutil.copy(path, SRC / path.name)
-    else:
-        subprocess.run([sys.executable, "-m", "course_lib.student", str(ROOT / "notebooks"),
-                        str(SRC), "--force"], check=True, cwd=ROOT)
-    return sorted(SRC.glob("[0-9]*.ipynb"))
+def _unused_mathjax(folder, names):
+    """MathJax's other combined bundles and its SVG output: the pages load tex-chtml.js only.
+
+    (17 of its 24 MB; what tex-chtml.js loads on demand, fonts, a11y, sre, ui, is kept.)
+    """
+    top = Path(folder).name == "es5"
+    return [
+        n
+        for n in names
+        if (top and n.endswith(".js") and n != "tex-chtml.js")
+        or (Path(folder).name == "output" and n in ("svg", "svg.js"))
+    ]
+
+
+def source_notebooks(src, solutions, student_dir):
+    """Copy the chapters and problem sets to ``src`` (see the module docstring, step 1)."""
+    shutil.rmtree(src, ignore_errors=True)
+    src.mkdir(parents=True)
+    base = Path(student_dir) if student_dir else ROOT
+    for folder in FOLDERS:
+        if not (base / folder).is_dir():
+            continue
+        if solutions or student_dir:
+            for path in sorted((base / folder).glob("[0-9a-z]*.ipynb")):
+                shutil.copy(path, src / path.name)
+        else:
+            subprocess.run(
+                [
+                    sys.executable,
+                    "-m",
+                    "course_lib.student",
+                    str(ROOT / folder),
+                    str(src),
+                    "--force",
+                ],
+                check=True,
+                cwd=ROOT,
+            )
+    return sorted(src.glob("*.ipynb"))
 
 
 def launch_line(url, name):
@@ -81,7 +126,7 @@ def launch_line(url, name):
 
 
 def _alt_text(cells, i):
-    for cell in cells[i + 1:i + 3]:
+    for cell in cells[i + 1 : i + 3]:
         if cell.cell_type == "markdown" and cell.source.strip():
             text = re.sub(r"[*_`$\\#>]", "", cell.source.strip().split("\n\n")[0])
             return " ".join(text.split())[:200]
@@ -92,6 +137,8 @@ def prepare(nb, name, url):
     nb.cells = [c for c in nb.cells if c.get("id") != nbtool.SETUP_ID]
     nb.cells.insert(1, nbformat.v4.new_markdown_cell(launch_line(url, name)))
     for cell in nb.cells:
+        if cell.cell_type == "markdown":  # the site's pages are side by side
+            cell.source = SIBLING_LINK.sub("](", cell.source)
         # a stub raises, and so does the check cell after it (an nbgrader test cell)
         graded = cell.metadata.get("nbgrader", {}).get("grade", False)
         if cell.cell_type == "code" and (STUB in cell.source or graded):
@@ -100,27 +147,45 @@ def prepare(nb, name, url):
     return nb
 
 
+def _still(output):
+    """An explorer's output without its widget view: the PNG stays, then the line saying why."""
+    data = output["data"]
+    for key in (nbtool.WIDGET_VIEW, "text/html"):
+        data.pop(key, None)
+    note = nbformat.v4.new_output("display_data", data={"text/markdown": STILL_NOTE})
+    return [output, note] if "image/png" in data else [note]
+
+
 def finish(nb):
-    """Drop widget views, give every figure alt text, clean."""
+    """Explorers to their still pictures, alt text for every figure, clean."""
     for i, cell in enumerate(nb.cells):
-        outputs = cell.get("outputs", [])
-        cell.outputs = [o for o in outputs if nbtool.WIDGET_VIEW not in o.get("data", {})]
-        for output in cell.outputs:
-            html = output.get("data", {}).get("text/html")
-            if html:
-                output["data"]["text/html"] = "".join(html).replace(FA_CDN, FA_LOCAL)
-        if any("image/png" in o.get("data", {}) for o in cell.outputs):
+        outputs = []
+        for output in cell.get("outputs", []):
+            if nbtool.WIDGET_VIEW in output.get("data", {}):
+                outputs += _still(output)
+            else:
+                outputs.append(output)
+        if "outputs" in cell:
+            cell.outputs = outputs
+        if any("image/png" in o.get("data", {}) for o in outputs):
             cell.metadata["mystnb"] = {"image": {"alt": _alt_text(nb.cells, i)}}
     return nbtool.clean(nb)
 
 
-def write_index(names, solutions, url):
-    edition = ("**Instructor edition**: the worked solutions are shown." if solutions else
-               "Student edition: the exercises are left for you to solve.")
+def write_index(src, names, solutions, url):
+    edition = (
+        "**Instructor edition**: the worked solutions are shown."
+        if solutions
+        else "Student edition: the exercises are left for you to solve."
+    )
     toc = "\n".join(Path(n).stem for n in names)
-    launch = (f"[Launch the course on Binder]({course_links.binder_url(url)})" if url
-              else f"Launch links are {course_links.UNSET}.")
-    (SRC / "index.md").write_text(f"""# Rigid-body rotations
+    launch = (
+        f"[Launch the course on Binder]({course_links.binder_url(url)})"
+        if url
+        else f"Launch links are {course_links.UNSET}."
+    )
+    (src / "index.md").write_text(
+        f"""# Rigid-body rotations
 
 Notebooks for an introductory robotics course: rigid bodies, rotation matrices, exponential
 coordinates, each chapter with a sympy proof, a numeric check and a figure for every result.
@@ -132,28 +197,72 @@ coordinates, each chapter with a sympy proof, a numeric check and a figure for e
 
 {toc}
 ```
-""", encoding="utf-8")
+""",
+        encoding="utf-8",
+    )
+
+
+def build(solutions=False, student_dir=None, out=None):
+    """Build the site; return its folder."""
+    edition = "instructor" if solutions else "student"
+    out = Path(out) if out else BUILD / ("site-instructor" if solutions else "site")
+    src = BUILD / f"site-src-{edition}"
+    url = course_links.repository_url()
+    static = install_scripts()
+    paths = source_notebooks(src, solutions, student_dir)
+    cwd = Path(student_dir) / "notebooks" if student_dir else ROOT / "notebooks"
+    if student_dir:  # the kernels import the student edition's own course_lib
+        os.environ["PYTHONPATH"] = os.pathsep.join(
+            [str(Path(student_dir).resolve()), os.environ.get("PYTHONPATH", "")]
+        )
+    for path in paths:
+        nb = prepare(nbformat.read(path, as_version=4), path.name, url)
+        seconds = nbtool.execute(nb, cwd)
+        nbformat.write(finish(nb), path)
+        print(f"{path.name}: executed in {seconds:.1f} s")
+    write_index(src, [p.name for p in paths], solutions, url)
+    shutil.copy(HERE / "conf.py", src / "conf.py")
+    shutil.copytree(HERE / "templates", src / "_templates", dirs_exist_ok=True)
+    shutil.rmtree(out, ignore_errors=True)
+    env = {**os.environ, "COURSE_SITE_STATIC": str(static), "COURSE_SITE_EDITION": edition}
+    subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "sphinx",
+            "-b",
+            "html",
+            "-q",
+            "-W",
+            "--keep-going",
+            str(src),
+            str(out),
+        ],
+        check=True,
+        env=env,
+    )
+    print(f"site: {out / 'index.html'}" + (" (instructor edition)" if solutions else ""))
+    return out
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description="Build the course website in build/site/.")
-    parser.add_argument("--solutions", action="store_true", help="instructor edition")
+    parser = argparse.ArgumentParser(description="Build the course website.")
+    parser.add_argument(
+        "--solutions",
+        action="store_true",
+        help="instructor edition, in build/site-instructor/ with a banner",
+    )
+    parser.add_argument(
+        "--from",
+        dest="student_dir",
+        metavar="DIR",
+        help="take the notebooks of this student edition as they are",
+    )
+    parser.add_argument("--out", metavar="DIR", help="where the site goes")
     args = parser.parse_args(argv)
-    url = course_links.repository_url()
-    static = install_scripts()
-    paths = source_notebooks(args.solutions)
-    for path in paths:
-        nb = prepare(nbformat.read(path, as_version=4), path.name, url)
-        seconds = nbtool.execute(nb, ROOT / "notebooks")
-        nbformat.write(finish(nb), path)
-        print(f"{path.name}: executed in {seconds:.1f} s")
-    write_index([p.name for p in paths], args.solutions, url)
-    shutil.copy(Path(__file__).with_name("conf.py"), SRC / "conf.py")
-    shutil.rmtree(OUT, ignore_errors=True)
-    env = {**os.environ, "COURSE_SITE_STATIC": str(static)}
-    subprocess.run([sys.executable, "-m", "sphinx", "-b", "html", "-q", "-W", "--keep-going",
-                    str(SRC), str(OUT)], check=True, env=env)
-    print(f"site: {OUT / 'index.html'}" + (" (instructor edition)" if args.solutions else ""))
+    if args.solutions and args.student_dir:
+        parser.error("--solutions and --from exclude each other")
+    build(args.solutions, args.student_dir, args.out)
     return 0
 
 

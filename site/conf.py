@@ -1,7 +1,8 @@
 """Sphinx configuration of the course website (`make site`; site/build.py prepares the pages).
 
 Everything the pages load is served from the site itself: MathJax 3 comes from the npm package
-that site/build.py installs into build/site-deps/, the theme is Sphinx's own (alabaster).
+that site/build.py installs into build/site-deps/, the theme is Sphinx's own (alabaster). The
+instructor's edition (COURSE_SITE_EDITION=instructor) has a banner on every page.
 """
 
 import os
@@ -15,13 +16,17 @@ exclude_patterns = ["_build", "**.ipynb_checkpoints"]
 html_theme = "alabaster"
 html_title = project
 html_theme_options = {"nosidebar": False, "show_powered_by": False}
-html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # holds mathjax/ (site/build.py)
-mathjax_path = "mathjax/tex-chtml.js"                 # relative to _static/
+html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # mathjax/, course.css (site/build.py)
+mathjax_path = "mathjax/tex-chtml.js"  # relative to _static/
+html_css_files = ["course.css"]  # no page wider than the window
+templates_path = ["_templates"]  # site/templates: the instructor banner
+html_context = {"course_instructor_edition": os.environ.get("COURSE_SITE_EDITION") == "instructor"}
 html_show_sourcelink = False
+html_copy_source = False  # no _sources/ copies of the notebooks: the pages are the site
 
 # The notebooks are executed by site/build.py (tools/notebooks.py, which does not stall on
 # widget cells); myst-nb only renders them.
 nb_execution_mode = "off"
-nb_render_markdown_format = "myst"   # Markdown(...) outputs (tables) are parsed, math included
+nb_render_markdown_format = "myst"  # Markdown(...) outputs (tables) are parsed, math included
 myst_enable_extensions = ["dollarmath", "amsmath"]
 suppress_warnings = ["mystnb.unknown_mime_type"]

@@ -494,3 +494,158 @@ def test_strings_none_and_complex_are_type_errors(fn):
     for bad in ("abc", None, [1j, 0, 0]):
         with pytest.raises(TypeError):
             fn(bad)
+
+
+# ------------------------------------------------------------------ the exercise checker
+# Hostile answers to course_lib.exercises.check: each gets a clear message, never a hang, a
+# traceback or a method of the student's object called. The bound is generous (the machine is
+# shared); benchmarks/bench_exercises.py shows the 1 s target.
+
+import re  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+from decimal import Decimal  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import sympy as sp  # noqa: E402
+
+from course_lib.exercises import EXERCISES, Value, alpha, check, get  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from tools import exercise_fingerprints as F  # noqa: E402
+
+_BOUND = 5.0  # seconds of wall clock
+
+
+def _timed_check(name, answer):
+    start = time.perf_counter()
+    result = check(name, answer)
+    elapsed = time.perf_counter() - start
+    assert elapsed < _BOUND, (name, elapsed)
+    assert not re.search(r"\(\w*Error\)", result.message), result.message
+    return result
+
+
+def _deep(n):
+    e = alpha
+    for _ in range(n):
+        e = sp.sin(e)
+    return e
+
+
+HOSTILE = [
+    ("two_mirrors", lambda: Decimal("1E+10000000"), "too complex", "1e300 or more"),
+    ("two_mirrors", lambda: Decimal("1E+100000000"), "too complex", "1e300 or more"),
+    ("motion_from_points", lambda: [[0] * 1000] * 1000, "malformed", "list of 1000 items"),
+    ("vb_from_va", lambda: list(range(10**5)), "malformed", "list of 100000 items"),
+    ("two_mirrors", lambda: sp.Pow(2, 10**29, evaluate=False), "too complex", "power above"),
+    ("two_mirrors", lambda: 10 ** (10**6), "too complex", "1e300 or more"),
+    ("composed_angle", lambda: _deep(300), "too complex", "nested more than"),
+    ("vb_from_va", lambda: np.zeros(10**6), "malformed", "wrong shape"),
+    ("motion_from_points", lambda: sp.zeros(300, 300), "malformed", "wrong shape"),
+]
+
+
+@pytest.mark.parametrize(
+    "name, make, status, fragment", HOSTILE, ids=[f"{n}-{f}" for n, _, _, f in HOSTILE]
+)
+def test_hostile_answers_get_a_clear_message_quickly(name, make, status, fragment):
+    result = _timed_check(name, make())
+    assert not result.ok and result.status == status, str(result)
+    assert fragment in result.message, str(result)
+
+
+def test_a_numpy_float_subclass_claiming_numpy_is_refused_unread():
+    calls = []
+
+    class Sneaky(np.float64):
+        def __float__(self):
+            calls.append("float")
+            return 5 * math.pi / 18
+
+        def __eq__(self, other):
+            calls.append("eq")
+            return True
+
+        __hash__ = np.float64.__hash__
+
+    Sneaky.__module__ = "numpy"
+    Sneaky.__name__ = "float64"
+    for answer in (Sneaky(0.0), [Sneaky(0.0)], np.float64(0.0) + 0):
+        calls.clear()
+        result = _timed_check("two_mirrors", answer)
+        assert not result.ok
+        assert calls == []
+    assert _timed_check("two_mirrors", Sneaky(0.0)).status == "not allowed"
+
+
+def test_a_sympy_subclass_is_refused_before_any_of_its_methods_is_called():
+    calls = []
+    armed = []
+
+    class Spy(sp.Symbol):
+        def __getattribute__(self, attr):
+            if armed:
+                calls.append(attr)
+            return super().__getattribute__(attr)
+
+        def __hash__(self):
+            if armed:
+                calls.append("__hash__")
+            return sp.Symbol.__hash__(self)
+
+        def __eq__(self, other):
+            if armed:
+                calls.append("__eq__")
+            return True
+
+    Spy.__module__ = "sympy.core.symbol"
+    spy = Spy("s")
+    answers = [
+        ("composed_angle", spy),
+        ("composed_angle", sp.Add(spy, alpha, evaluate=False)),
+        ("unit_tangent", [spy, 0, 0]),
+        ("composed_angle", sp.cos(spy)),
+        ("two_mirrors", (spy,)),
+    ]
+    for name, answer in answers:
+        armed.append(1)
+        try:
+            result = _timed_check(name, answer)
+        finally:
+            armed.clear()
+        assert result.status == "not allowed", str(result)
+        assert calls == [], (name, calls)
+
+
+def _reference(name):
+    ex = get(name)
+    sols, _ = F.solutions(ex.chapter)
+    return F.run(ex, sols[name])[ex.answer_variable]
+
+
+@pytest.mark.parametrize(
+    "name",
+    [n for n, ex in EXERCISES.items() if isinstance(ex.answer, Value) and ex.answer.shape == ()],
+)
+def test_a_right_answer_as_a_0d_numpy_array_passes(name):
+    right = float(sp.N(_reference(name)))
+    assert _timed_check(name, np.array(right)).ok
+    assert not _timed_check(name, np.array(right + 0.5)).ok
+
+
+MATRIX_EXPRESSIONS = [n for n, ex in EXERCISES.items() if getattr(ex.answer, "matrix_degree", None)]
+
+
+def test_there_are_seven_matrix_expression_exercises():
+    assert len(MATRIX_EXPRESSIONS) == 7
+
+
+@pytest.mark.parametrize("name", MATRIX_EXPRESSIONS)
+def test_regression_a_wrong_explicit_matrix_was_told_right_value_but_the_form(name):
+    shape = get(name).answer.shape
+    rows, cols = shape if len(shape) == 2 else (shape[0], 1)
+    wrong = sp.Matrix(rows, cols, lambda i, j: 7 * (i + 2 * j + 1) ** 2)
+    result = _timed_check(name, wrong)
+    assert result.status == "wrong", str(result)
+    assert "right value" not in result.message

@@ -19,7 +19,7 @@ sys.path.insert(0, str(ROOT))
 from course_lib.exercises import exercises  # noqa: E402
 from tools import sync_exercises as sync  # noqa: E402
 
-CHAPTERS = [1, 2, 3, 4]
+CHAPTERS = [1, 2, 3, 4, 5]
 MARKER_WORDS = ("BEGIN SOLUTION", "END SOLUTION", "HIDDEN TESTS")
 HIDDEN = (
     "### BEGIN HIDDEN TESTS\nassert answer_coords_by_projection is not None\n### END HIDDEN TESTS"
@@ -95,14 +95,14 @@ def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chap
 def test_problem_set_cells_run_in_order_and_every_check_passes(chapter):
     nb = _fresh(chapter)
     ns = {}
-    shown = []
+    results = []
     for cell in nb.cells:
         if cell.cell_type != "code":
             continue
-        *body, last = cell.source.split("\n")
-        exec("\n".join(body), ns)
-        shown.append(eval(last, ns) if last == "result" else exec(last, ns))
-    results = [r for r in shown if r is not None]
+        ns.pop("result", None)
+        exec(cell.source, ns)  # a check cell records the answer and shows the verdict
+        if "result" in ns:
+            results.append(ns["result"])
     assert len(results) == len(exercises(chapter))
     assert all(str(r).startswith("✓ ") for r in results), [str(r) for r in results]
 
@@ -149,9 +149,22 @@ def test_cells_of_an_exercise_removed_from_the_bank_are_dropped():
         nbformat.v4.new_code_cell("answer_gone = None"),
     ]
     stale[0].id, stale[1].id = "gone-statement", "gone-answer"
+    for cell in stale:
+        cell.metadata["nbgrader"] = {"grade_id": cell.id, "locked": True}
     nb.cells += stale
     again = sync.sync_problem_set(nb, 1)
     assert not {"gone-statement", "gone-answer"} & {c.id for c in again.cells}
+
+
+def test_chapter_cells_whose_ids_look_like_exercise_cells_are_kept():
+    """Regression: a chapter cell id such as ``angles-check`` matched the exercise-id pattern and
+    sync dropped it (found on chapter 05); only cells with nbgrader metadata are the tool's."""
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("# Chapter 1 · Frames")])
+    mine = nbformat.v4.new_code_cell("print(1)")
+    mine.id = "angles-check"
+    nb.cells.append(mine)
+    again = sync.sync_chapter(nb, 1)
+    assert [c.id for c in again.cells][-2:] == ["angles-check", "ch1-problem-set"]
 
 
 def test_command_line_refuses_an_unknown_chapter(capsys):

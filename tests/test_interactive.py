@@ -640,7 +640,7 @@ def frames_of(html):
     """The embedded frames of the player, as PIL images."""
     from PIL import Image
 
-    found = re.findall(r'data:image/png;base64,([^"]+)"', html)
+    found = re.findall(r'frames\[\d+\] = "data:image/png;base64,([^"]+)"', html)
     return [Image.open(io.BytesIO(base64.b64decode(f.replace("\\n", "")))) for f in found]
 
 
@@ -677,8 +677,26 @@ def test_spin_animation_closes_its_figure_so_it_is_not_shown_twice():
 
 def test_spin_animation_default_stays_small_enough_for_a_committed_notebook():
     html = spin_animation().data
-    assert html.count("data:image/png;base64") == 16
+    assert len(frames_of(html)) == 16
     assert len(html) < 200_000  # palette frames: 360 px at about 9 KB each
+
+
+def test_regression_spin_animation_loads_nothing_from_a_cdn():
+    """Issue 16: the player linked Font Awesome from a CDN for its button icons."""
+    html = spin_animation(frames=2).data
+    assert not re.search(r"https?://|(src|href)=\"//", html), "a URL in the player"
+    assert "font-awesome" not in html and 'class="fa ' not in html
+    buttons = re.findall(r"<button[^>]*>\s*<span aria-hidden=\"true\">([^<]+)</span>", html)
+    assert len(buttons) == 9 and all(b.strip() for b in buttons)
+
+
+def test_spin_animation_shows_its_first_frame_without_running_a_script():
+    html = spin_animation(frames=3).data
+    img = re.search(r'<img id="_anim_img[0-9a-f]+" src="data:image/png;base64,([^"]+)"', html)
+    assert img is not None, "the player's <img> has no src: blank until a script runs"
+    first = re.search(r'frames\[0\] = "data:image/png;base64,([^"]+)"', html).group(1)
+    assert img.group(1) == first.replace("\\\n", "")
+    assert "\\" not in img.group(1)
 
 
 def test_spin_animation_refuses_bad_sizes():
@@ -690,3 +708,26 @@ def test_spin_animation_refuses_bad_sizes():
         spin_animation(size=20)
     with pytest.raises(ValueError, match="axis must be non-zero to define a direction"):
         spin_animation(axis=(0, 0, 0))
+
+
+# --------------------------------------------------------------------------------------------
+# Without ipympl: the still picture and one line saying why
+# --------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
+def test_explorer_without_ipympl_falls_back_to_its_still_picture_with_one_line(make, monkeypatch):
+    def missing():
+        raise ModuleNotFoundError("No module named 'ipympl'", name="ipympl")
+
+    monkeypatch.setattr(interactive, "_ipympl_classes", missing)
+    explorer = make()
+    assert not explorer.live and explorer.children == ()
+    bundle = explorer._repr_mimebundle_()
+    assert "application/vnd.jupyter.widget-view+json" not in bundle
+    png = base64.b64decode(bundle["image/png"])
+    assert png.startswith(b"\x89PNG") and len(png) > 5_000  # the figure, drawn
+    why = explorer.why_still
+    assert "ipympl" in why and "pip install ipympl" in why and "\n" not in why
+    assert bundle["text/html"].count("<img") == 1 and why in bundle["text/html"]
+    assert bundle["text/plain"].splitlines()[-1] == why

@@ -1,12 +1,16 @@
 """The real nbgrader round trip (nbgrader 0.9.6, pinned in environment.txt).
 
+In a course directory written by ``make course`` (grader/course.py: the confined kernel and the
+grader's preprocessors in its nbgrader_config.py):
+
 1. ``nbgrader generate_assignment`` accepts every problem set as it is (no marker word in the
    prose, balanced markers, unique grade ids) and releases copies without the solutions or the
    hidden tests.
 2. ``nbgrader autograde`` of the problem sets (``problem_sets/``, written by
    tools/sync_exercises.py) gives the instructor's notebooks full marks, more than 0, and the
-   released copies 0.
-3. ``nbgrader validate`` fails on a released (blank) copy.
+   released copies 0; an instructor's hidden test in a check cell runs.
+3. ``nbgrader validate`` fails on a released (blank) copy with one line per failed check that
+   holds the whole hint, and no output of a check cell reads as a (partial) score.
 """
 
 import json
@@ -22,6 +26,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from course_lib.exercises import exercises  # noqa: E402
+from grader.course import write_course  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 NBGRADER = Path(sys.executable).with_name("nbgrader")
@@ -39,12 +44,7 @@ def run(args, cwd):
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
     root = tmp_path_factory.mktemp("course")
-    (root / "nbgrader_config.py").write_text(
-        "c = get_config()\n"
-        f"c.CourseDirectory.root = {str(root)!r}\n"
-        "c.CourseDirectory.course_id = 'rotations'\n"
-        "c.ExecutePreprocessor.timeout = 120\n"
-    )
+    write_course(root)
     sections = root / "source" / "exercises"
     sections.mkdir(parents=True)
     for path in PROBLEM_SETS:
@@ -98,22 +98,41 @@ def test_autograde_gives_the_instructor_full_marks_and_a_blank_copy_zero(graded)
     assert (score, max_score) == (0, total)
 
 
-def test_autograded_check_cells_show_the_verdict_and_the_hint(graded):
+def test_autograded_check_cells_of_a_blank_copy_hold_the_graders_note(graded):
     nb = json.loads(
         (graded / "autograded" / "blank" / "exercises" / "03_exercises.ipynb").read_text()
     )
     checks = [c for c in nb["cells"] if c.get("metadata", {}).get("nbgrader", {}).get("grade")]
     assert len(checks) == len(exercises(3))
     for cell in checks:
-        errors = [o for o in cell["outputs"] if o["output_type"] == "error"]
-        assert errors and errors[0]["ename"] == "AssertionError"
-        assert "no answer yet" in errors[0]["evalue"] or "NameError" in errors[0]["evalue"]
+        (error,) = cell["outputs"]
+        assert error["output_type"] == "error" and error["ename"] == "GradingNote"
+        assert error["evalue"].endswith("0 points from the grader: no answer recorded.")
 
 
-def test_validate_fails_on_a_blank_copy_and_passes_the_instructor_copy(graded):
+def test_no_check_cell_output_reads_as_a_score(graded):
+    nb = json.loads(
+        (graded / "autograded" / "instructor" / "exercises" / "02_exercises.ipynb").read_text()
+    )
+    for cell in nb["cells"]:
+        if cell.get("metadata", {}).get("nbgrader", {}).get("grade"):
+            assert [o["output_type"] for o in cell["outputs"]] == ["display_data"]
+            assert "".join(cell["outputs"][0]["data"]["text/plain"]).startswith("✓ ")
+
+
+def test_validate_prints_one_whole_line_per_failed_check_and_passes_the_instructor_copy(graded):
     blank = graded / "release" / "exercises" / "02_exercises.ipynb"
     code, out = run(["validate", str(blank)], graded)
-    assert "VALIDATION FAILED" in out or "failed" in out.lower(), out
+    assert "VALIDATION FAILED ON 7 CELL(S)" in out, out
+    assert "cannot be converted to a float" not in out
+    lines = [line.strip() for line in out.splitlines() if "CheckFailed" in line]
+    assert len(lines) == len(exercises(2)), out
+    for ex, line in zip(exercises(2), lines):
+        assert line == (
+            f"CheckFailed: ✗ {ex.name}: no answer yet: assign your answer to "
+            f"`{ex.answer_variable}`."
+        )
     solved = graded / "source" / "exercises" / "02_exercises.ipynb"
     code, out = run(["validate", str(solved)], graded)
     assert "Success! Your notebook passes all the tests." in out, out
+    assert "cannot be converted to a float" not in out

@@ -356,6 +356,71 @@ def test_products_of_rotations_are_rotations(seed):
     assert so3.is_rotation(R1 @ R2)
 
 
+# --- regressions found by the peer suites (issue 19) ---------------------------------------
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("k", [0, 1, 2])
+def test_exp_at_exactly_pi_about_a_coordinate_axis_had_diagonal_minus_1_0000000000000009(k, sign):
+    # exp(log(diag(1, −1, −1))) = exp([π, 0, 0]) gave −1.0000000000000009 (4 ulp) on the
+    # diagonal, so arccos of an entry was NaN; every peer library gives −1 there.
+    axis = np.eye(3)[k]
+    expected = 2.0 * np.diag(axis) - np.eye(3)
+    for R in (
+        so3.exp(sign * np.pi * axis),
+        so3.exp(list(sign * np.pi * axis)),
+        so3.exp(sign * np.pi * axis[None])[0],
+        so3.exp(axis, sign * np.pi),
+        so3.exp(axis[None], [sign * np.pi])[0],
+    ):
+        assert np.array_equal(np.diagonal(R), np.diagonal(expected))
+        assert np.abs(R).max() <= 1.0
+        assert not np.isnan(np.arccos(np.diagonal(R))).any()
+    assert np.array_equal(np.diagonal(so3.exp(so3.log(expected))), np.diagonal(expected))
+
+
+def test_exp_has_no_entry_beyond_1_in_magnitude_at_and_near_pi():
+    axes = sample_axes(2000)
+    for theta in (np.pi, np.nextafter(np.pi, 0), np.pi - 1e-9, np.pi / 2):
+        R = so3.exp(axes * theta)
+        assert np.abs(R).max() <= 1.0, theta
+        for i in range(0, len(axes), 97):
+            assert np.abs(so3.exp(axes[i] * theta)).max() <= 1.0, (theta, i)
+
+
+@settings(max_examples=300)
+@given(unit_axes, st.sampled_from([np.pi / 2, 2 * np.pi / 3, np.pi]), st.integers(-2, 2))
+def test_exp_has_no_entry_beyond_1_where_an_entry_is_exactly_1(axis, theta, ulps):
+    # the 120° turn about (1, 1, 1) permutes the axes; π/2 and π put ±1 on many entries
+    theta = theta + ulps * EPS * 4
+    for w in (axis * theta, np.ones(3) / np.sqrt(3) * theta):
+        assert np.abs(so3.exp(w)).max() <= 1.0
+        assert np.abs(so3.exp(w[None])).max() <= 1.0
+
+
+subnormal_rotvecs = st.lists(
+    st.integers(-(2**12), 2**12).map(lambda k: k * 5e-324), min_size=3, max_size=3
+).filter(lambda v: any(v))
+
+
+@settings(max_examples=300)
+@given(subnormal_rotvecs)
+def test_axis_angle_of_a_subnormal_angle_returned_an_axis_of_length_1_118(w):
+    # ‖v‖ rounded to a coarse subnormal: v / ‖v‖ had lengths such as 1.118 or 0.99
+    R = so3.exp(np.array(w))
+    for batch in (R, R[None], np.stack([R, np.eye(3)])):
+        axis, _ = so3.axis_angle(batch)
+        assert np.abs(np.linalg.norm(axis, axis=-1) - 1.0).max() <= 2 * EPS
+
+
+def test_axis_angle_of_rotation_by_1e_323_about_111_is_the_unit_diagonal():
+    R = so3.exp(np.full(3, 1e-323))
+    for batch in (R, R[None]):
+        axis, angle = so3.axis_angle(batch)
+        assert np.allclose(axis, np.full(3, 3**-0.5), atol=2 * EPS, rtol=0)
+        assert 0.0 < np.ravel(angle)[0] < 1e-322
+
+
 # --- bad input ---------------------------------------------------------------------------
 
 

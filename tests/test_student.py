@@ -674,6 +674,54 @@ def test_an_interrupt_while_writing_leaves_nothing(src, tmp_path, capsys, monkey
 # --------------------------------------------------------------------------------- command line
 
 
+# ------------------------------------------------------------ swapped folders, file system trouble
+
+
+def test_regression_swapped_folders_never_replace_instructor_notebooks(src, tmp_path, capsys):
+    """The issue's typo: `course_lib.student build/student notebooks --force` (folders swapped)."""
+    copies = tmp_path / "copies"
+    make_student_notebooks(src, copies)
+    assert_fails_cleanly(copies, src, capsys, "holds solution regions")
+    assert "BEGIN SOLUTION" in (src / "a_chapter.ipynb").read_text()
+
+
+def test_a_symlink_loop_as_output_is_one_line(src, tmp_path, capsys):
+    (tmp_path / "loop1").symlink_to(tmp_path / "loop2")
+    (tmp_path / "loop2").symlink_to(tmp_path / "loop1")
+    for out in (tmp_path / "loop1", tmp_path / "loop1" / "deeper"):
+        assert main([str(src), str(out), "--force"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "symlink loop" in err and "Traceback" not in err
+
+
+def test_a_file_where_a_folder_should_be_is_one_line(src, tmp_path, capsys):
+    (tmp_path / "afile").write_text("not a folder")
+    for out, fragment in [("afile", "is not a directory"), ("afile/sub", "Not a directory")]:
+        assert main([str(src), str(tmp_path / out)]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and fragment in err and "Traceback" not in err
+    assert (tmp_path / "afile").read_text() == "not a folder"
+
+
+def test_no_permission_is_one_line(src, tmp_path, capsys, monkeypatch):
+    def refuse(path, *args, **kwargs):
+        raise PermissionError(errno.EACCES, "Permission denied", str(path))
+
+    monkeypatch.setattr(Path, "mkdir", refuse)  # root ignores modes: refuse as the OS would
+    assert_fails_cleanly(src, tmp_path / "out", capsys, "Permission denied")
+
+
+def test_keep_outputs_keeps_the_reading_part_and_clears_from_the_first_graded_cell():
+    nb = synthetic_notebook()
+    nb.cells.insert(1, executed(new_code_cell("print('reading')"), 1))
+    copy_ = student_notebook(nb, keep_outputs=True)
+    assert copy_.cells[1].outputs and copy_.cells[1].execution_count == 1
+    first = next(i for i, c in enumerate(nb.cells) if c.metadata.get("nbgrader"))
+    assert all(not c.get("outputs") for c in copy_.cells[first:])
+    assert sum(bool(c.get("outputs")) for c in copy_.cells) == first - 1  # the two before it
+    assert not student_notebook(nb).cells[1].outputs
+
+
 def run_cli(*args):
     return subprocess.run(
         [sys.executable, "-m", "course_lib.student", *map(str, args)],

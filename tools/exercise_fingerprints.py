@@ -5,10 +5,15 @@
 
 For every exercise of the bank, runs the chapter's set-up code and the reference solution of
 ``tools/solutions/chNN.py`` (the code the notebook's answer cell holds between the solution
-markers), then stores only what the checker needs: values at the seeded points and the salted
-digest of the exact normal form (symbolic answers), salted digests of the entries (numbers),
-a salted digest of the letters (choices), and the same for every known mistake. The solutions
-themselves never enter the installed package.
+markers), then stores only key-stretched digests of rounded values (see
+``course_lib/exercises/_digests.py``): of every entry of a numeric answer, of the letters of a
+choice, of projections of a symbolic answer's values at the sample points and of the features
+its hints use. No value is stored.
+
+A known mistake is stored as the transformation (``course_lib/exercises/_transforms.py``) that
+turns the mistaken answer into the right one; the checker applies it to the student's answer.
+Only a mistake that no transformation of the library explains is stored as the digests of its
+own values (the tool prints which ones).
 """
 
 from __future__ import annotations
@@ -19,15 +24,23 @@ import json
 import sys
 from pathlib import Path
 
+import numpy as np
+
 ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from course_lib import exercise_bank  # noqa: E402
 from course_lib.exercises import EXERCISES, Choice, Expr, Value  # noqa: E402
+from course_lib.exercises import _digests as D  # noqa: E402
 from course_lib.exercises import _engine as E  # noqa: E402
 from course_lib.exercises._check import _numbers  # noqa: E402
 from course_lib.exercises._reading import read_answer, read_choice  # noqa: E402
+from course_lib.exercises._transforms import (  # noqa: E402
+    EXPR_TRANSFORMS,
+    NUMBER_OPS,
+    PERMUTATIONS,
+)
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / "fingerprints.json"
 
@@ -49,37 +62,139 @@ def run(ex, code):
     return ns
 
 
-def _fingerprint_of(ex, answer):
+def _close(a, b):
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and bool(np.all(np.abs(a - b) <= 1e-10 * np.maximum(1, np.abs(b))))
+
+
+# ------------------------------------------------------------------------------ numbers
+
+
+#: Operations that only make sense for a single number or an angle.
+_SCALAR_OPS = {"acos", "cos", "pi_minus", "two_pi_minus", "minus_two_pi", "plus_two_pi"}
+
+
+def _number_transform(spec, right, wrong):
+    """The permutation and per-entry operations that turn ``wrong`` into ``right``, or None:
+    the one that explains most entries, with most entries left as they are."""
+    shape, best = spec.shape, None
+    ops_allowed = {
+        k: op for k, op in NUMBER_OPS.items() if shape == () or spec.angle or k not in _SCALAR_OPS
+    }
+    for pname, perm in PERMUTATIONS.items():
+        idx = perm(shape)
+        if idx is None:
+            continue
+        moved = wrong[idx]
+        ops = []
+        for m, e in zip(moved, right):
+            found = [k for k, op in ops_allowed.items() if _close(op(m), e)]
+            ops.append(found[0] if found else None)
+        changed = pname != "identity" or any(op not in (None, "same") for op in ops)
+        score = (sum(op is not None for op in ops), ops.count("same"))
+        enough = 2 * score[0] >= len(ops)  # a transform explains at least half of the entries
+        if changed and enough and (best is None or score > best[0]):
+            best = (score, {"perm": pname, "ops": ops})
+    return None if best is None else best[1]
+
+
+def _numbers_of(ex, answer):
+    _, M = read_answer(answer, ex.answer.shape, set(), numeric=True)
+    return _numbers(M)
+
+
+def value_fingerprint(ex, answer, mistakes):
+    name, step = ex.name, E.STEP_NUMBER
+    right = _numbers_of(ex, answer)
+    fp = {"entries": [D.cell_digest(name, f"entry{i}", v, step) for i, v in enumerate(right)]}
+    fp["mistakes"] = {}
+    for mid, wrong_answer in mistakes.items():
+        wrong = _numbers_of(ex, wrong_answer)
+        transform = _number_transform(ex.answer, right, wrong)
+        taken = [rec.get("transform") for rec in fp["mistakes"].values()]
+        if transform is None or transform in taken:
+            digests = [
+                D.cell_digest(name, f"mistake {mid} {i}", v, step) for i, v in enumerate(wrong)
+            ]
+            fp["mistakes"][mid] = {"entries": digests}
+        else:
+            fp["mistakes"][mid] = {"transform": transform}
+    return fp
+
+
+# ------------------------------------------------------------------------------ choices
+
+
+def choice_fingerprint(ex, answer, mistakes):
+    letters = read_choice(answer, ex.answer.letters)
+    fp = {"letters": D.stretched(ex.name, "letters", letters), "mistakes": {}}
+    for mid, wrong in mistakes.items():
+        mask = "".join(sorted(set(letters) ^ set(read_choice(wrong, ex.answer.letters))))
+        fp["mistakes"][mid] = {"mask": mask}
+    return fp
+
+
+# ------------------------------------------------------------------------------ expressions
+
+
+def expr_values(ex, answer):
     spec = ex.answer
-    if isinstance(spec, Choice):
-        return E.digest(ex.name, "choice", read_choice(answer, spec.letters))
-    if isinstance(spec, Value):
-        _, M = read_answer(answer, spec.shape, set(), numeric=True)
-        return E.value_cells(ex.name, _numbers(M))
     syms = E.base_symbols(spec)
     readable = set(spec.allowed or ()) | set(spec.domain) | set(syms)
     form, M = read_answer(answer, spec.shape, readable)
-    vals = E.values(form, M, syms, E.points(ex.name, spec))
-    exact = E.exact_form(ex.name, M, spec.unit_omega) if form == "explicit" else None
-    return {"values": vals.reshape(len(vals), -1).tolist(), "exact": exact}
+    pts, _ = E.points(ex.name, spec)
+    vals = E.values(form, M, syms, pts)
+    return vals.reshape((len(vals), *spec.shape))
+
+
+def _expr_transform(ex, right, wrong):
+    pts, _ = E.points(ex.name, ex.answer)
+    for tname, f in EXPR_TRANSFORMS.items():
+        moved = f(wrong, pts)
+        if moved is not None and _close(moved, right):
+            return tname
+    return None
+
+
+def expr_fingerprint(ex, answer, mistakes):
+    name, spec = ex.name, ex.answer
+    pts, near = E.points(name, spec)
+    A = expr_values(ex, answer)
+    which = ("value", "near", "entries", "scaled", "direction", "traceless", "coefficients")
+    feats = E.features(name, spec, A, pts, near, which)
+    fp = {
+        label: D.cell_digest(name, label, z, E.step_of(label))
+        for label, z in feats.items()
+        if not label.startswith("-")
+    }
+    fp["structure"] = E.structure(A)
+    fp["mistakes"] = {}
+    for mid, wrong_answer in mistakes.items():
+        wrong = expr_values(ex, wrong_answer)
+        tname = _expr_transform(ex, A, wrong)
+        taken = [rec.get("transform") for rec in fp["mistakes"].values()]
+        if tname is None or tname in taken:
+            z = D.projections(name, "value", wrong, 2)
+            fp["mistakes"][mid] = {"value": D.cell_digest(name, f"mistake {mid}", z, E.STEP_VALUE)}
+        else:
+            fp["mistakes"][mid] = {"transform": tname}
+    return fp
+
+
+FINGERPRINTS = {Value: value_fingerprint, Choice: choice_fingerprint, Expr: expr_fingerprint}
 
 
 def fingerprint(ex, code, mistakes):
     """The stored record of one exercise."""
     ns = run(ex, code)
-    main = _fingerprint_of(ex, ns[ex.answer_variable])
     wrong = {}
     for mid, expr in mistakes.items():
         if mid not in ex.mistakes:
             raise ValueError(f"{ex.name}: mistake {mid!r} has no hint in the bank")
-        fp = _fingerprint_of(ex, eval(expr, ns))
-        wrong[mid] = fp["values"] if isinstance(ex.answer, Expr) else fp
+        wrong[mid] = eval(expr, ns)
     if set(ex.mistakes) - set(mistakes):
         raise ValueError(f"{ex.name}: hints without a mistake: {set(ex.mistakes) - set(mistakes)}")
-    if isinstance(ex.answer, Expr):
-        return {"values": main["values"], "exact": main["exact"], "mistakes": wrong}
-    key = "digest" if isinstance(ex.answer, Choice) else "cells"
-    return {key: main, "mistakes": wrong}
+    return FINGERPRINTS[type(ex.answer)](ex, ns[ex.answer_variable], wrong)
 
 
 def build():
@@ -114,6 +229,12 @@ def main(argv=None):
         print("fingerprints up to date" if same else "fingerprints out of date")
         return 0 if same else 1
     TARGET.write_text(text)
+    for name, fp in sorted(json.loads(text).items()):
+        kept = [
+            m for m, rec in fp["mistakes"].items() if "transform" not in rec and "mask" not in rec
+        ]
+        if kept:
+            print(f"{name}: mistakes stored as digests of their values: {', '.join(kept)}")
     print(f"wrote {TARGET.relative_to(ROOT)} ({len(json.loads(text))} exercises)")
     return 0
 

@@ -5,8 +5,10 @@ notebook, ``--apply``:
 
 1. puts the setup cell first (inserting it, or replacing an older version of it): a no-op where
    ``course_lib`` imports; in a checkout it imports the library from the repository root above
-   the notebook; elsewhere it installs the course with ``%pip`` from the repository URL of
-   ``pyproject.toml``, or says what to do while that URL is unset;
+   the notebook; elsewhere (Colab, a notebook on its own) it installs the course with ``%pip``
+   from the published address of ``pyproject.toml`` (a repository, or a wheel's URL ending in
+   ``.whl``), or, while none is set, says in plain words what a student can do (ask for the
+   course link, or open the notebook from the course's hub);
 2. executes the notebook in a fresh kernel, in its own folder, without recording timings;
 3. cleans it: no widget state, no execution timestamps, widget views without model ids,
    deterministic animation ids, PNGs re-encoded with a 128-colour palette;
@@ -54,17 +56,21 @@ import importlib.util
 import pathlib
 import sys
 
-# The course repository, from [project.urls] in pyproject.toml (None: not published yet)
-COURSE_URL = {url}
+COURSE_URL = {url}  # [project.urls] of pyproject.toml
 if importlib.util.find_spec("course_lib") is None:
     here = pathlib.Path.cwd().resolve()
     roots = [p for p in (here, *here.parents) if (p / "course_lib" / "__init__.py").is_file()]
     if roots:
         sys.path.insert(0, str(roots[0]))
-    elif COURSE_URL:
-        %pip install --quiet "git+{{COURSE_URL}}"
+    elif COURSE_URL:  # a wheel's address, or the repository of the student edition
+        package = COURSE_URL if COURSE_URL.endswith(".whl") else "git+" + COURSE_URL
+        %pip install --quiet {{package}}
     else:
-        raise ModuleNotFoundError("course_lib: open this notebook in the course folder (README)")
+        raise ModuleNotFoundError(
+            "This notebook needs the course's own Python library, which is not installed here. "
+            "Ask your instructor for the course link and open the notebook from it, "
+            "or open it from the course's JupyterHub."
+        )
 if "google.colab" in sys.modules:  # Colab draws the explorers' ipympl figures only with this
     from google.colab import output
 

@@ -130,10 +130,14 @@ def _solution_source(ex, code):
 
 
 def _check_source(ex):
+    """The check cell: the student's check for feedback, and the answer's record for the
+    grader (course_lib.record), which decides the points outside the student's kernel. No
+    last-line value: nbgrader would read an execute_result as a partial score."""
     return (
+        "from course_lib.record import record\n\n"
         f'result = check("{ex.name}", {ex.answer_variable})\n'
-        "assert result.ok, result.message\n"
-        "result"
+        f'record("{ex.name}", {ex.answer_variable}, result)\n'
+        "assert result.ok, result.message"
     )
 
 
@@ -175,9 +179,18 @@ def problem_set_cells(chapter):
 # Merging with what is on disk
 # ---------------------------------------------------------------------------------------------
 
-OWNED = re.compile(
+_OWNED_ID = re.compile(
     r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|answer|check))$"
 )
+
+
+def _owned(cell):
+    """Whether the tool wrote ``cell``: an exercise-style id and nbgrader metadata.
+
+    A chapter's own cells (ids such as ``angles-check``) and an instructor's cells (random ids)
+    are never the tool's, whatever their ids look like.
+    """
+    return bool(_OWNED_ID.match(cell.get("id") or "")) and "nbgrader" in cell.get("metadata", {})
 
 
 def _digest(code):
@@ -227,7 +240,7 @@ def sync_problem_set(nb, chapter, path=None):
         cid = cell.get("id")
         if cid in ids:
             prev = cid
-        elif not OWNED.match(cid or ""):
+        elif not _owned(cell):
             follows.setdefault(prev, []).append(cell)
     cells = follows.get(None, [])
     for kind, cid, src, meta in generated:
@@ -245,7 +258,7 @@ def sync_problem_set(nb, chapter, path=None):
 def sync_chapter(nb, chapter):
     """The chapter ``nb`` without exercise cells, ending with the pointer to its problem set."""
     pid = f"ch{chapter}-problem-set"
-    cells = [c for c in nb.cells if not OWNED.match(c.get("id") or "") and c.get("id") != pid]
+    cells = [c for c in nb.cells if not _owned(c) and c.get("id") != pid]
     old = next((c for c in nb.cells if c.get("id") == pid), None)
     source = pointer_source(chapter)
     pointer = (

@@ -58,16 +58,21 @@ Matrix).
         title="An angle from three lengths",
         statement=r"""
 Two vectors have the lengths $\lVert x\rVert = 3$ and $\lVert y\rVert = 4$, and
-$\lVert x - y\rVert = \sqrt{13}$. Expand $\lVert x - y\rVert^2 = (x-y)^T(x-y)$ to find $x^Ty$
-(the idea behind the polarization identity (17)), then the angle between $x$ and $y$.
-Give the angle in radians, in $[0, \pi]$.
+$\lVert x - y\rVert = \sqrt{13}$. Find the angle between the two diagonals $x - y$ and
+$x + y$ of the parallelogram spanned by $x$ and $y$ (lengths and inner products only: no
+coordinates are needed). Give the angle in radians, in $[0, \pi]$.
 """,
         answer=Value(shape=(), angle=True),
-        tip="‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy, and xᵀy = ‖x‖ ‖y‖ cos(angle).",
+        tip="Expand ‖x − y‖² = (x − y)ᵀ(x − y) to get xᵀy first; then expand (x − y)ᵀ(x + y) "
+        "and ‖x + y‖² the same way.",
         mistakes={
             "cosine": "that is the cosine of the angle; the exercise asks for the angle itself.",
             "sign": "sign: ‖x − y‖² = ‖x‖² + ‖y‖² − 2xᵀy, so a short x − y means a positive "
-            "inner product and an acute angle.",
+            "inner product xᵀy.",
+            "x_and_y": "that is the angle between x and y; the exercise asks for the angle "
+            "between the diagonals x − y and x + y.",
+            "reversed": "that is the angle between y − x and x + y (π minus the right one): "
+            "mind the order in x − y.",
         },
     ),
     Exercise(
@@ -94,14 +99,14 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
         tip="Every map here keeps distances; test the cross product on e₁, e₂: is "
         "g_*(e₁) × g_*(e₂) = g_*(e₃)? (For g(p) = Mp + d that is det M = +1.)",
         mistakes={
-            "mirrors": "some of your maps keep every distance but turn a right-handed frame into "
-            "a left-handed one: compare g_*(e₁) × g_*(e₂) with g_*(e₃).",
-            "translation": "a translation keeps distances and cross products of vectors too "
-            "(Definition 1 allows g(p) = Mp + d, acting on vectors as g_*).",
-            "two_mirrors": "two reflections one after the other are not a reflection: each "
-            "flips the handedness, and the second flips it back.",
-            "point_reflection": "p ↦ −p is not a turn in three dimensions: its matrix −I has "
-            "det (−1)³ = −1, and a half turn after it (det +1) does not change the sign.",
+            "mirrors": "recheck the handedness: for each map compare g_*(e₁) × g_*(e₂) with "
+            "g_*(e₃).",
+            "translation": "recheck what Definition 1 allows: what does a translation do to "
+            "the difference of two points?",
+            "two_mirrors": "recheck the maps made of two reflections: what does each one do "
+            "to the handedness?",
+            "point_reflection": "recheck the maps built from p ↦ −p: what is det(−I) in three "
+            "dimensions, and what does a turn after it change?",
         },
     ),
     Exercise(
@@ -165,17 +170,23 @@ with sympy). Give the pair $(\alpha, \beta)$ as a list of two expressions.
         level="challenge",
         title="A motion from three points",
         statement=r"""
-A rigid body transformation $g(p) = Rp + d$ maps the origin to $(1, 2, 3)$, the point
-$e_1 = (1, 0, 0)$ to $(1, 2, 4)$ and $e_2 = (0, 1, 0)$ to $(0, 2, 3)$. Find $R$
-(Proposition 2: $g$ maps the frame $e_1, e_2, e_3$ to a right-handed orthonormal frame).
+A rigid body transformation $g(p) = Rp + d$ maps the three points $a = (3, 3, 0)$,
+$b = (0, 3, 3)$ and $c = (3, 0, 3)$ to $g(a) = (2, 6, 4)$, $g(b) = (2, 3, 7)$ and
+$g(c) = (5, 3, 4)$. Find $R$. None of the points is the origin or a basis vector, and
+$b - a$, $c - a$ are not perpendicular, so no column of $R$ can be read off directly: use what
+Definition 1 says about differences of points and about cross products.
 Give a 3x3 array or matrix.
 """,
         answer=Value(shape=(3, 3), rotation=True),
-        tip="R eᵢ = g(eᵢ) − g(0); the third column follows from the first two.",
+        tip="A difference of two points loses d; three known vectors and their known images "
+        "give one matrix equation for R.",
         mistakes={
-            "mirror": "your third column points the wrong way (det R = −1): it is "
-            "R e₁ × R e₂, in that order.",
-            "points": "subtract g(0) = d first: the columns of R are g(eᵢ) − g(0), not g(eᵢ).",
+            "mirror": "your matrix turns the frame inside out: the image of a cross product "
+            "is the cross product of the images, in the same order (condition 2).",
+            "points": "you used the points themselves, so d is mixed into your R: work with "
+            "differences of points, which d does not change.",
+            "columns": "b − a is not a basis vector, so R(b − a) is not a column of R: relate "
+            "R to the vectors you know and solve for it.",
         },
     ),
 ]

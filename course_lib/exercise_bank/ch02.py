@@ -30,12 +30,12 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
         "(XY)ᵀ = YᵀXᵀ, det(XY) = det X det Y and det(−X) = (−1)³ det X.",
         mistakes={
             "orthogonal": "XᵀX = I is not enough: a rotation also has det = +1 "
-            "(Proposition 4); −R and MR have det = −1.",
-            "two_reflections": "M R M has two factors of det −1: det(MRM) = (−1)(+1)(−1) = +1, "
-            "and it is orthogonal as a product of orthogonal matrices.",
-            "sum": "a sum of rotations is not a rotation in general: try R = S = R_z(π) in "
-            "R + S − I and check XᵀX = I.",
-            "minus": "det(−R) = (−1)³ det R for a 3x3 matrix: −R has det −1.",
+            "(Proposition 4). Recheck the determinants.",
+            "two_reflections": "recheck the products with reflections in them: what does each "
+            "factor do to the determinant, and is a product of orthogonal matrices orthogonal?",
+            "sum": "recheck the sums: is a sum of rotations orthogonal? Try a simple example "
+            "and compute XᵀX.",
+            "minus": "recheck the negated matrices: what is det(−X) for a 3x3 matrix X?",
         },
     ),
     Exercise(
@@ -88,18 +88,17 @@ $(a, b, c)$, and check $\det R = +1$.
         statement=r"""
 Let `A` stand for $R_{ab}$ and `B` for $R_{cb}$ (two rotation matrices, `MatrixSymbol`s; mind
 the order of the subscripts of `B`). Write $R_{ca}$ in terms of `A` and `B`, **without an
-inverse**. Two facts do it: by (64) read for each pair of frames, $v_c = R_{cb}v_b$ and
-$v_b = R_{ba}v_a$, so $R_{ca} = R_{cb}R_{ba}$; and $v_a = R_{ab}v_b$ turned around gives
-$R_{ba} = R_{ab}^{-1}$, an inverse that Proposition 5 lets you write without inverting. Give a
-matrix expression in `A`, `B` (products and `.T`).
+inverse**, using (64) for each pair of frames and Proposition 5. Give a matrix expression in
+`A`, `B` (products and `.T`).
 """,
         answer=Expr(shape=(3, 3), allowed=(A, B), matrix_degree=2),
-        tip="For a rotation R⁻¹ = Rᵀ, so R_ba = R_abᵀ; the inner subscripts of a product "
-        "must match (R_cb R_ba).",
+        tip="Write how v_c follows from v_a one frame at a time (eq. 64), then use "
+        "Proposition 5 for the step that goes against a subscript.",
         mistakes={
-            "order": "order: the inner subscripts must meet, R_cb R_ba, so B comes first.",
+            "order": "order: in a product of frame changes the inner subscripts must meet; "
+            "check which factor comes first.",
             "forward": "that is R_ac; the exercise asks for the opposite direction, R_ca = R_acᵀ.",
-            "bc": "B stands for R_cb, not R_bc: here R_bc = Bᵀ, and R_ca = R_cb R_ba.",
+            "bc": "B stands for R_cb, not R_bc: mind the order of its subscripts.",
         },
     ),
     Exercise(
@@ -129,7 +128,8 @@ Give a 3x1 matrix expression.
         title="A product of two hat matrices",
         statement=r"""
 For vectors $x, y$, show that $\hat x \hat y + (x^T y)\, I$ is an outer product of two vectors:
-apply it to a vector $v$ and use $\hat x v = x \times v$ (Definition 5). Write it in terms of
+apply it to a vector $v$, use $\hat x v = x \times v$ (Definition 5) and the expansion of a
+double cross product (problem set 1, exercise 1.6). Write it in terms of
 `X` and `Y`, the 3x1 `MatrixSymbol`s standing for $x$ and $y$ (products and `.T`; no hat).
 Give a 3x3 matrix expression.
 """,

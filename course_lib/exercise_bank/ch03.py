@@ -125,13 +125,15 @@ $(0, 2)$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then fi
 smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
         answer=Value(shape=(2,)),
-        tip="Differentiate the first equation once more: ẍ₁ = −a² x₁; then impose the "
-        "condition at time t = 1 on your solution.",
+        tip="The solution is x(t) = e^{At} x(0), the matrix form of (106); compute A² and "
+        "sort the series of e^{At} into even and odd powers. Then impose the condition at t = 1.",
         mistakes={
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
             "a > 0 the point turns counterclockwise.",
             "larger": "that a works, but a smaller positive a does too.",
             "next_turn": "that a works (a full turn more), but a smaller positive a does too.",
+            "degrees": "a is a rate in radians per unit time, as everywhere in the notes: give "
+            "it in radians, not degrees.",
         },
     ),
     Exercise(

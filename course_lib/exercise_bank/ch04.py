@@ -86,7 +86,8 @@ Give a 3-vector.
         tip="The trace gives θ (so sin θ); then read ω̂ off (R − Rᵀ)/(2 sin θ): "
         "ω = (entry (3,2), entry (1,3), entry (2,1)).",
         mistakes={
-            "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length)."
+            "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length).",
+            "no_two": "R − Rᵀ is twice the skew part sin θ ω̂: mind the factor 2.",
         },
     ),
     Exercise(
@@ -97,7 +98,7 @@ Give a 3-vector.
         title="Fixed axes and body axes",
         statement=r"""
 A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
-axis, then by 90° about its **own** (current) $y$ axis, then by 90° about the **world** $x$
+axis, then by 90° about its **own** (current) $x$ axis, then by 60° about the **world** $x$
 axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
 """,
         answer=Value(shape=(3, 3), rotation=True),
@@ -105,7 +106,7 @@ axis. Find its final orientation $R$ (its axes written in the world frame). Give
         "body's own axis from the right.",
         mistakes={
             "all_body": "the last turn is about the world x axis: it multiplies from the left.",
-            "all_world": "the second turn is about the camera's own y axis: it multiplies from "
+            "all_world": "the second turn is about the camera's own x axis: it multiplies from "
             "the right.",
         },
     ),
@@ -146,30 +147,42 @@ both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
         tip="R_z(β) ≈ I + βẑ + β²ẑ²/2 and R_x(α) ≈ I + αx̂ + α²x̂²/2; the symmetric terms "
         "drop out of the skew part, and the skew part of ẑx̂ is ½(ẑx̂ − x̂ẑ).",
         mistakes={
-            "first_order": "that is the first-order part; the product βα ẑx̂ adds a "
-            "second-order term (its skew part is ½[ẑ, x̂], the hat of ½ e_y).",
+            "first_order": "that is the first-order part; the product of the two first-order "
+            "terms adds a term of second order: find its skew part.",
             "sign": "check the order of the factors: R_z(β) is on the left, so the cross term "
             "is βα ẑx̂, not αβ x̂ẑ.",
         },
     ),
     Exercise(
-        name="half_turn_axis",
+        name="two_half_turns",
         chapter=4,
         number=8,
         level="challenge",
-        title="The axis of a half turn",
+        title="Two half turns",
         statement=r"""
-A half turn $R$ ($\theta = \pi$) has the first row $\frac{1}{49}(23,\ -24,\ 36)$; the other
-rows are not given. Since $R - R^T = 0$ for a half turn, the skew part says nothing about the
-axis. Use $R = I + 2\hat\omega^2 = 2\omega\omega^T - I$ to find the unit axis $\omega$, with its
-first component positive. Give a 3-vector.
+Write $H(a) = R(a, \pi)$ for the half turn about a unit axis $a$. Take
+$u = \frac13(1,\ 2,\ 2)$ and $v = \frac13(-2,\ 1,\ -2)$, and the rotation
+$R = H(u)\,H(v)$ (the half turn about $v$, then the one about $u$, both about fixed axes).
+Find its rotation vector (exponential coordinates) $r = \omega\theta$ with a unit axis
+$\omega$ and $\theta \in [0, \pi]$. Give a 3-vector.
+Then explain the result without multiplying matrices: which line do both half turns map onto
+itself, what does each half turn do in the plane through the origin perpendicular to that
+line, and how are $\theta$ and the angle between $u$ and $v$ related?
 """,
         answer=Value(shape=(3,)),
-        tip="(R + I)/2 = ωωᵀ: its first row is ω₁ ω; the entry (1,1) gives ω₁².",
+        tip="Build each half turn from the case θ = π of section 6. In the plane that holds "
+        "u and v, a half turn about a line of that plane acts like a mirror. Keep θ in [0, π].",
         mistakes={
-            "other_sign": "−ω is the same half-turn axis; the exercise fixes the sign by ω₁ > 0.",
-            "abs": "the signs of the components are not free: ωᵢωⱼ = (R + I)ᵢⱼ/2 fixes them "
-            "relative to each other.",
+            "order": "the product is H(u) H(v), in this order: H(v) H(u) is its inverse, which "
+            "turns the other way.",
+            "long_way": "that vector is longer than π: its exponential is the right rotation, "
+            "but the asked θ lies in [0, π]. Which other axis and angle give the same turn?",
+            "single_angle": "the angle is not the angle between the two lines of the axes; find "
+            "it from the trace of the product.",
+            "unit_axis": "that is a unit vector; the rotation vector is ωθ, the axis times the "
+            "angle.",
+            "sum": "rotation vectors add only for turns about the same axis (section 7); u and "
+            "v are different axes.",
         },
     ),
 ]

@@ -4,33 +4,37 @@ The exercises themselves are data, one module per chapter in :mod:`course_lib.ex
 (statement, level, points, the kind and form of answer asked for, hints). A notebook shows an
 exercise from the bank and grades a student's answer with :func:`check`::
 
-    answer_hat_fifth = omega.dot(omega)**2 * W    # in the matrix symbol W standing for ω̂
+    answer_hat_fifth = ...                  # the student's matrix expression in W
     result = check("hat_fifth", answer_hat_fifth)
     assert result.ok, result.message        # the nbgrader test cell fails on a wrong answer
 
-What is checked, and how (details in :mod:`course_lib.exercises._engine`):
+What is checked, and how (details in :mod:`course_lib.exercises._engine` and
+:mod:`course_lib.exercises._digests`):
 
 - **Only plain objects.** Sympy expressions and matrices, numpy arrays, lists, tuples and
-  numbers, built from the exercise's own symbols and elementary functions. Subclasses and
-  ``floor``, ``Heaviside``, ``Mod``, ``Piecewise``, ``Integral``, ``Abs`` ... are "not allowed
-  here"; an answer too large to check quickly is "too complex to check: simplify it first".
+  numbers, built from the exercise's own symbols and elementary functions, their types compared
+  by identity before anything else is done with them (no method of a student's object is ever
+  called). Subclasses and ``floor``, ``Heaviside``, ``Mod``, ``Piecewise``, ``Integral``,
+  ``Abs`` ... are "not allowed here"; an answer too large, too deep or too big a number to
+  check quickly is "too complex to check: simplify it first".
 - **The form.** Where an exercise asks for a form (a matrix expression of degree at most 2 in
   ``W``; an expression in ``x·x``, ``y·y``, ``x·y`` only; no square root left), a right value in
   another form gets "right value, but the exercise asks for ...".
-- **The value.** Exactly (the salted digest of the expanded normal form, modulo
-  :math:`\lVert\omega\rVert = 1`), or else at 40 seeded points over the whole domain, within the
-  package's one tolerance ``TOL`` (scaled by the size of the value). Numbers are compared
-  within ``TOL`` through salted digests. There is no tolerance argument.
+- **The value.** A symbolic answer is evaluated at seeded points over the whole domain (in
+  pairs that redraw one symbol at a time, so that leaving a symbol out cannot pass), and the
+  projections of its values are rounded and compared with stored digests; a number is compared
+  entry by entry, within the package's one tolerance ``TOL``. There is no tolerance argument.
 
-The expected answers are nowhere in the package: the checker holds fingerprints (values at the
-seeded points, salted digests) made by the repository tool ``tools/exercise_fingerprints.py``
-from the instructor's reference solutions, which stay in the instructor's notebooks.
+The expected answers are nowhere in the package, nor any value of them: the checker holds only
+salted, key-stretched (scrypt) digests of rounded values, made by the repository tool
+``tools/exercise_fingerprints.py`` from the instructor's reference solutions. Hints come from
+transformations of the student's own answer (its negative, its transpose, a known mistake
+undone ...) compared with those digests.
 
 The symbols of the exercises are those of :mod:`course_lib.symbolic`, re-exported here.
 
 Examples
 --------
->>> import sympy as sp
 >>> print(check("hat_fifth", W**5))
 ✗ hat_fifth: right value, but the exercise asks for a matrix expression in W of degree at
 most 2, with coefficients in omega_1, omega_2 and omega_3: reduce the higher powers first.
@@ -195,8 +199,8 @@ def check(name, answer):
 
     Examples
     --------
-    >>> print(check("hat_fifth", -W))  # doctest: +ELLIPSIS
-    ✗ hat_fifth: your answer is the right one times a factor that changes with the symbols: ...
+    >>> print(check("which_are_rigid", "a"))  # doctest: +ELLIPSIS
+    ✗ which_are_rigid: that is not the right set of letters. Hint: ...
     """
     ex = get(name)
     try:

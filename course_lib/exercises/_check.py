@@ -1,4 +1,9 @@
-"""Judging one answer: form, value, and a hint that never shows the expected answer."""
+"""Judging one answer: form, value, and a hint that never shows the expected answer.
+
+Every comparison goes through the key-stretched digests of :mod:`._digests`: the student's
+answer, or a transformation of it (its negative, its transpose, a known mistake undone ...), is
+rounded, digested and compared with the stored digests of the right answer.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +12,7 @@ import sympy as sp
 from sympy.matrices.expressions import MatrixSymbol
 
 from .. import symbolic as S
+from . import _digests as D
 from . import _engine as E
 from ._model import Choice, Expr, Value
 from ._reading import (
@@ -18,10 +24,23 @@ from ._reading import (
     read_answer,
     read_choice,
 )
+from ._transforms import EXPR_TRANSFORMS, NUMBER_OPS, PERMUTATIONS, apply_letters
 
 _UNIT_HINT = (
     "ω is a unit vector here: use ω₁² + ω₂² + ω₃² = 1 (a term with ‖ω‖² does not "
     "vanish, it becomes 1)."
+)
+
+
+_COMPLEX_ANSWER = (
+    "your answer is complex; a real answer is expected. If it came from sp.solve, pick the "
+    "real solution (sympy lists every root; a symbol made with real=True keeps only real "
+    "ones); if it came from acos or asin, their argument must lie in [−1, 1]: recheck it."
+)
+_NOT_FINITE = (
+    "your answer contains nan or infinity (or a number too large for double precision): "
+    "look for a division by zero, or acos/asin/sqrt of a number outside their domain "
+    "(a cosine lies in [−1, 1])."
 )
 
 
@@ -80,7 +99,7 @@ def form_violation(spec, form, M):
     return None
 
 
-# ------------------------------------------------------------------------------ hints
+# ------------------------------------------------------------------------------ words
 
 
 def _positions(bad, shape):
@@ -99,21 +118,10 @@ def _positions(bad, shape):
     return f"{noun} {_join(names)} {verb} wrong."
 
 
-def _symmetry_hint(A, Ev):
-    At, Et = np.swapaxes(A, -1, -2), np.swapaxes(Ev, -1, -2)
-    if E.close(A, np.zeros_like(A)):
-        return None
-    if E.close(Ev, -Et) and E.close(A, At):
-        return (
-            "your matrix is symmetric, but the right one is skew-symmetric (Mᵀ = −M): "
-            "an odd power of a skew matrix is skew, an even one is symmetric."
-        )
-    if E.close(Ev, Et) and E.close(A, -At):
-        return (
-            "your matrix is skew-symmetric, but the right one is symmetric: an even power "
-            "of a skew matrix is symmetric, an odd one is skew."
-        )
-    return None
+def _free_symbols(M):
+    """The free symbols of a read answer (a sympy object, or a list of them)."""
+    items = M if isinstance(M, (list, tuple)) else [M]
+    return set().union(*(getattr(m, "free_symbols", set()) for m in items))
 
 
 def _uses_omega(spec):
@@ -121,35 +129,72 @@ def _uses_omega(spec):
 
 
 _W_BASIS = ("I", "W", "W²")
+_NEGATIVE = "your answer is the negative of the right one: check the signs."
+_TRANSPOSE = "your answer is the transpose of the right one (rows and columns swapped)."
+_TRANSPOSE_W = (
+    "your answer is the transpose of the right one; for a polynomial in W that "
+    "means the W term (an odd power) has the wrong sign, since Wᵀ = −W."
+)
 
 
-def _w_coefficients(M, H):
-    """Coefficients (NPOINTS, 3) of M in the basis I, H, H² at each point, or None when M is
-    not in their span."""
-    basis = np.stack([np.broadcast_to(np.eye(3), H.shape), H, H @ H], -1).reshape(-1, 9, 3)
-    coeffs = np.stack([np.linalg.lstsq(b, m.ravel(), rcond=None)[0] for b, m in zip(basis, M)])
-    if not E.close(np.einsum("kij,kj->ki", basis, coeffs), M.reshape(-1, 9)):
-        return None
-    return coeffs
+# ------------------------------------------------------------------------------ symbolic
 
 
-def _w_coefficient_hint(spec, A, Ev, pts):
+class _Symbolic:
+    """A symbolic answer's values and the comparisons of its features with the digests."""
+
+    writes_omega = True  # False for an answer written in W alone (set by judge_expr)
+
+    def __init__(self, ex, fp, A, pts, near):
+        self.ex, self.fp, self.A, self.pts, self.near = ex, fp, A, pts, near
+        self.name, self.spec = ex.name, ex.answer
+
+    def right(self, A):
+        z = D.projections(self.name, "value", A, 2)
+        return D.matches(self.name, "value", z, E.STEP_VALUE, self.fp["value"])
+
+    def feature(self, label, stored_label=None):
+        stored_label = stored_label or label.lstrip("-")
+        base = label.lstrip("-").rstrip("0123456789")
+        which = {"coef": "coefficients", "entry": "entries"}.get(base, base)
+        z = E.features(self.name, self.spec, self.A, self.pts, self.near, (which,)).get(label)
+        if z is None:
+            return False
+        return D.matches(self.name, stored_label, z, E.step_of(label), self.fp.get(stored_label))
+
+    def mistake(self, mid, rec):
+        if "value" in rec:
+            z = D.projections(self.name, "value", self.A, 2)
+            return D.matches(self.name, f"mistake {mid}", z, E.STEP_VALUE, rec["value"])
+        moved = EXPR_TRANSFORMS[rec["transform"]](self.A, self.pts)
+        return moved is not None and self.right(moved)
+
+
+def _symmetry_hint(A, structure):
+    At = np.swapaxes(A, -1, -2)
+    scale = max(1.0, float(np.max(np.abs(A))))
+    if structure == "skew" and np.max(np.abs(A - At)) <= E.TOL * scale:
+        return (
+            "your matrix is symmetric, but the right one is skew-symmetric (Mᵀ = −M): "
+            "an odd power of a skew matrix is skew, an even one is symmetric."
+        )
+    if structure == "symmetric" and np.max(np.abs(A + At)) <= E.TOL * scale:
+        return (
+            "your matrix is skew-symmetric, but the right one is symmetric: an even power "
+            "of a skew matrix is symmetric, an odd one is skew."
+        )
+    return None
+
+
+def _w_coefficient_hint(s):
     """For a polynomial in W (ω̂): which of the coefficients of I, W, W² is wrong."""
-    if pts is None or spec.matrix_degree is None or S.W not in set(spec.allowed or ()):
+    if "coef0" not in s.fp or E.w_coefficients(s.A, s.pts) is None:
         return None
-    w = np.stack([pts[s] for s in S.omega], -1)
-    H = np.zeros((len(w), 3, 3))
-    H[:, 0, 1], H[:, 0, 2], H[:, 1, 2] = -w[:, 2], w[:, 1], -w[:, 0]
-    H -= np.swapaxes(H, -1, -2)
-    cA, cE = _w_coefficients(A, H), _w_coefficients(Ev, H)
-    if cA is None or cE is None:
-        return None
-    same = lambda a, b: np.allclose(a, b, rtol=1e-6, atol=1e-6)  # noqa: E731 - noise of lstsq
-    bad = [j for j in range(3) if not same(cA[:, j], cE[:, j])]
+    bad = [j for j in range(3) if not s.feature(f"coef{j}")]
     if not bad:
         return None
     names = _join([_W_BASIS[j] for j in bad])
-    if all(same(cA[:, j], -cE[:, j]) for j in bad):
+    if all(s.feature(f"-coef{j}") for j in bad):
         verb = "have" if len(bad) > 1 else "has"
         return f"the coefficient of {names} {verb} the wrong sign."
     noun = "coefficients" if len(bad) > 1 else "coefficient"
@@ -158,68 +203,57 @@ def _w_coefficient_hint(spec, A, Ev, pts):
     return f"the {noun} of {names} {verb} wrong{rest}."
 
 
-def _generic_hint(spec, A, Ev, pts=None):
-    shape = spec.shape
-    zero = np.zeros_like(Ev)
-    nonzero = not E.close(Ev, zero)
-    if nonzero and E.close(A, -Ev):
-        return "your answer is the negative of the right one: check the signs."
-    if (
-        len(shape) == 2
-        and E.close(A, np.swapaxes(Ev, -1, -2))
-        and not E.close(Ev, np.swapaxes(Ev, -1, -2))
-    ):
-        if spec.matrix_degree is not None and S.W in set(spec.allowed or ()):
-            return (
-                "your answer is the transpose of the right one; for a polynomial in W that "
-                "means the W term (an odd power) has the wrong sign, since Wᵀ = −W."
-            )
-        return "your answer is the transpose of the right one (rows and columns swapped)."
-    if nonzero and E.close(A, zero):
+def _shape_hints(s):
+    """Hints from the negative, the transpose and the zero answer."""
+    A, shape = s.A, s.spec.shape
+    zero = bool(np.all(np.abs(A) <= E.TOL))
+    if not zero and s.right(-A):
+        return _NEGATIVE
+    if len(shape) == 2:
+        At = np.swapaxes(A, -1, -2)
+        if not np.allclose(A, At, rtol=0, atol=E.TOL) and s.right(At):
+            return _TRANSPOSE_W if E._uses_w(s.spec) else _TRANSPOSE
+    if zero:
         return "your answer is zero, the right one is not."
-    if nonzero:
-        c = float(np.sum(A * Ev) / np.sum(Ev * Ev))
-        if abs(c - 1) > 1e-6 and abs(c + 1) > 1e-6 and E.close(A, c * Ev):
-            return (
-                "your answer is a constant multiple of the right one: check the numerical factors."
-            )
-        axes = tuple(range(1, A.ndim))
-        norms = np.sum(Ev * Ev, axis=axes)
-        if shape != () and np.all(norms > E.TOL):  # a scalar is always a pointwise multiple
-            ck = np.sum(A * Ev, axis=axes) / norms
-            if E.close(A, ck.reshape((-1,) + (1,) * len(shape)) * Ev):
-                example = " (for instance the powers of ‖ω‖)" if _uses_omega(spec) else ""
-                return (
-                    "your answer is the right one times a factor that changes with the "
-                    f"symbols: check the scalar factors{example}."
-                )
-    if len(shape) == 2 and shape[0] == shape[1]:
-        hint = _symmetry_hint(A, Ev)
-        if hint:
-            return hint
-        D = A - Ev
-        s = np.trace(D, axis1=-2, axis2=-1) / shape[0]
-        if E.close(D, s[:, None, None] * np.eye(shape[0])):
-            msg = (
-                "your answer differs from the right one by a multiple of the identity: "
-                "check its I term."
-            )
-            return msg + (" " + _UNIT_HINT if spec.unit_omega else "")
-    per_point = [E.close(a[None], e[None]) for a, e in zip(A, Ev)]
-    if any(per_point):
+    return None
+
+
+def _generic_hint(s):
+    shape = s.spec.shape
+    hint = _shape_hints(s)
+    if hint:
+        return hint
+    if s.feature("scaled"):
+        return "your answer is a constant multiple of the right one: check the numerical factors."
+    if shape != () and s.feature("direction"):
+        example = " (for instance the powers of ‖ω‖)" if _uses_omega(s.spec) else ""
+        return (
+            "your answer is the right one times a factor that changes with the "
+            f"symbols: check the scalar factors{example}."
+        )
+    hint = _symmetry_hint(s.A, s.fp.get("structure", "")) if len(shape) == 2 else None
+    if hint:
+        return hint
+    if len(shape) == 2 and s.feature("traceless"):
+        msg = (
+            "your answer differs from the right one by a multiple of the identity: "
+            "check its I term."
+        )
+        # the ‖ω‖² advice is for answers in ω₁, ω₂, ω₃ or u; in W alone no ‖ω‖² can appear
+        return msg + (" " + _UNIT_HINT if s.spec.unit_omega and s.writes_omega else "")
+    if s.feature("near"):
         return (
             "your answer agrees with the right one at some values of the symbols but not "
             "over their whole range (a truncated series, or a formula valid only for some "
             "values?)."
         )
-    hint = _w_coefficient_hint(spec, A, Ev, pts)
+    hint = _w_coefficient_hint(s)
     if hint:
         return hint
     if shape == ():
         return "your expression is not equal to the right one."
-    bad = np.zeros(A.shape[1:], dtype=bool)
-    for a, e in zip(A, Ev):
-        bad |= np.abs(a - e) > E.TOL * max(1.0, float(np.abs(e).max()))
+    size = int(np.prod(shape))
+    bad = np.array([not s.feature(f"entry{j}") for j in range(size)])
     return _positions(bad.reshape(shape), shape)
 
 
@@ -228,16 +262,9 @@ def _property_hint(ex, M, syms, pts):
         r = residual(M)
         R = sp.ImmutableMatrix(r if isinstance(r, sp.MatrixBase) else [[r]])
         vals = E.values("explicit", R, syms, pts)
-        if not E.close(vals, np.zeros_like(vals)):
+        if np.max(np.abs(vals), initial=0.0) > E.TOL:
             return message
     return None
-
-
-# ------------------------------------------------------------------------------ judges
-
-
-def _stored(vals, shape):
-    return np.array(vals, dtype=float).reshape((E.NPOINTS, *shape))
 
 
 def judge_expr(ex, fp, answer):
@@ -246,27 +273,27 @@ def judge_expr(ex, fp, answer):
     readable = set(spec.allowed or ()) | set(spec.domain) | set(syms)
     form, M = read_answer(answer, spec.shape, readable)
     violation = form_violation(spec, form, M)
-    right = form == "explicit" and E.exact_form(ex.name, M, spec.unit_omega) == fp["exact"]
-    A = None
-    if not right:
-        pts = E.points(ex.name, spec)
-        A = E.values(form, M, syms, pts)
-        Ev = _stored(fp["values"], spec.shape)
-        A = A.reshape(Ev.shape)
-        right = E.close(A, Ev)
-    if right:
+    pts, near = E.points(ex.name, spec)
+    A = E.values(form, M, syms, pts)
+    s = _Symbolic(ex, fp, A.reshape((len(A), *spec.shape)), pts, near)
+    free = _free_symbols(M)
+    s.writes_omega = bool(set(S.omega) & free) or S.W not in free
+    if s.right(s.A):
         if violation:
             return (
                 "form",
                 f"right value, but the exercise asks for {_describe_form(spec)}: {violation}.",
             )
         return "correct", "correct."
-    for mid, vals in fp["mistakes"].items():
-        if E.close(A, _stored(vals, spec.shape)):
+    for mid, rec in fp["mistakes"].items():
+        if s.mistake(mid, rec):
             return "wrong", ex.mistakes[mid]
     hint = _property_hint(ex, M, syms, pts) if form == "explicit" else None
-    hint = hint or _generic_hint(spec, A, Ev, pts)
+    hint = hint or _generic_hint(s)
     return "wrong", hint + (_ROUNDED if _typed_rounded(M) else "")
+
+
+# ------------------------------------------------------------------------------ numbers
 
 
 def _numbers(M):
@@ -279,60 +306,105 @@ def _numbers(M):
     except (TypeError, ValueError, OverflowError):
         raise Rejected("could not read your answer as numbers.") from None
     if not np.all(np.isfinite(vals)):
-        raise Rejected(
-            "your answer contains nan or infinity (or a number too large for double precision)."
-        )
+        raise Rejected(_NOT_FINITE)
     if np.max(np.abs(vals), initial=0.0) >= MAX_MAGNITUDE:
         raise Rejected(f"your answer evaluates to {TOO_LARGE}.")
     if np.max(np.abs(vals.imag)) > E.TOL:
-        raise Rejected("your answer is complex; a real answer is expected.")
+        raise Rejected(_COMPLEX_ANSWER)
     return vals.real
+
+
+def _entry_ok(name, fp, i, value):
+    """Does entry ``i`` of a numeric answer, ``value``, match the right one (within TOL)?"""
+    return D.matches(name, f"entry{i}", value, E.STEP_NUMBER, fp["entries"][i], eps=E.TOL)
+
+
+def _mistake_entry_ok(name, mid, digests, i, value):
+    """Does entry ``i`` match that of the mistake ``mid`` stored as digests of its values?"""
+    return D.matches(name, f"mistake {mid} {i}", value, E.STEP_NUMBER, digests[i], eps=E.TOL)
+
+
+def _entries_ok(name, fp, vec):
+    """Per entry: does it match the right one? (every entry is digested)"""
+    return np.array([_entry_ok(name, fp, i, v) for i, v in enumerate(vec)])
+
+
+def _all_right(name, fp, vec):
+    """Do all entries match? Stops at the first that does not."""
+    vec = np.ravel(vec)
+    return len(vec) == len(fp["entries"]) and all(
+        np.isfinite(v) and _entry_ok(name, fp, i, v) for i, v in enumerate(vec)
+    )
+
+
+def _number_mistake(ex, fp, mid, rec, v):
+    """Did the student make the known mistake ``mid``? Its transformation (a permutation of the
+    entries, then an operation per entry) turns the student's answer into the right one on the
+    entries it names; or, stored as digests of its values, the answer matches them."""
+    name = ex.name
+    if "entries" in rec:
+        return all(_mistake_entry_ok(name, mid, rec["entries"], i, x) for i, x in enumerate(v))
+    t = rec["transform"]
+    moved = v[PERMUTATIONS[t["perm"]](ex.answer.shape)]
+    checked = False
+    for i, op in enumerate(t["ops"]):
+        if op is None:
+            continue
+        value = NUMBER_OPS[op](float(moved[i]))
+        if not np.isfinite(value) or not _entry_ok(name, fp, i, value):
+            return False
+        checked = True
+    return checked
+
+
+def _angle_hint(name, fp, v):
+    if _all_right(name, fp, v * np.pi / 180):
+        return "your angle is in degrees; the exercise asks for radians."
+    if any(_all_right(name, fp, v + shift) for shift in (2 * np.pi, -2 * np.pi)):
+        return (
+            "your angle differs from the right one by a full turn (2π): give it in "
+            "the range the exercise asks for."
+        )
+    if _all_right(name, fp, 2 * np.pi - v):
+        return (
+            "your angle is 2π minus the right one: the two have the same cosine; give the "
+            "one in the range the exercise asks for."
+        )
+    return None
+
+
+def _rotation_hint(v):
+    R = v.reshape(3, 3)
+    if np.linalg.norm(R.T @ R - np.eye(3)) > 1e-6:
+        return (
+            "your matrix is not a rotation: its columns are not orthonormal "
+            f"(‖RᵀR − I‖ = {np.linalg.norm(R.T @ R - np.eye(3)):.3g})."
+        )
+    if np.linalg.det(R) < 0:
+        return (
+            "your matrix has det R = −1: a reflection, not a rotation (check the order "
+            "of a cross product or the sign of one column)."
+        )
+    return None
 
 
 def _value_hint(ex, fp, v):
     spec, name = ex.answer, ex.name
-    for mid, cells in fp["mistakes"].items():
-        if E.match_cells(name, v, cells).all():
+    for mid, rec in fp["mistakes"].items():
+        if _number_mistake(ex, fp, mid, rec, v):
             return ex.mistakes[mid]
-    ok = E.match_cells(name, v, fp["cells"])
-    if np.any(v != 0) and E.match_cells(name, -v, fp["cells"]).all():
-        return "your answer is the negative of the right one: check the signs."
-    if len(spec.shape) == 1 and E.match_cells(name, v[::-1], fp["cells"]).all():
+    if np.any(v != 0) and _all_right(name, fp, -v):
+        return _NEGATIVE
+    if len(spec.shape) == 1 and _all_right(name, fp, v[::-1]):
         return (
             "your components are in the reverse order: give them in the order the exercise "
             "asks for."
         )
-    if len(spec.shape) == 2:
-        vt = v.reshape(spec.shape).T.ravel()
-        if E.match_cells(name, vt, fp["cells"]).all():
-            return "your answer is the transpose of the right one (rows and columns swapped)."
-    if spec.angle:
-        if E.match_cells(name, v * np.pi / 180, fp["cells"]).all():
-            return "your angle is in degrees; the exercise asks for radians."
-        for shift in (2 * np.pi, -2 * np.pi):
-            if E.match_cells(name, v + shift, fp["cells"]).all():
-                return (
-                    "your angle differs from the right one by a full turn (2π): give it in "
-                    "the range the exercise asks for."
-                )
-        if E.match_cells(name, 2 * np.pi - v, fp["cells"]).all():
-            return (
-                "your angle is 2π minus the right one: the two have the same cosine; give the "
-                "one in the range the exercise asks for."
-            )
-    if spec.rotation:
-        R = v.reshape(3, 3)
-        if np.linalg.norm(R.T @ R - np.eye(3)) > 1e-6:
-            return (
-                "your matrix is not a rotation: its columns are not orthonormal "
-                f"(‖RᵀR − I‖ = {np.linalg.norm(R.T @ R - np.eye(3)):.3g})."
-            )
-        if np.linalg.det(R) < 0:
-            return (
-                "your matrix has det R = −1: a reflection, not a rotation (check the order "
-                "of a cross product or the sign of one column)."
-            )
-    return _positions(~ok.reshape(spec.shape), spec.shape)
+    if len(spec.shape) == 2 and _all_right(name, fp, v.reshape(spec.shape).T.ravel()):
+        return _TRANSPOSE
+    hint = _angle_hint(name, fp, v) if spec.angle else None
+    hint = hint or (_rotation_hint(v) if spec.rotation else None)
+    return hint or _positions(~_entries_ok(name, fp, v).reshape(spec.shape), spec.shape)
 
 
 _ROUNDED = (
@@ -346,7 +418,7 @@ def _typed_rounded(M):
     """Does the answer hold a float typed with 3 to 10 significant digits (1.0472, 3.14,
     1.04719755)? A float that Python computed has 15-17; 0.5 or 2.0 are not rounded."""
     for node in sp.preorder_traversal(M):
-        if isinstance(node, sp.Float):
+        if type(node) is sp.Float:
             f = float(node)
             if f != round(f) and f == float(f"{f:.10g}") and f != float(f"{f:.2g}"):
                 return True
@@ -355,32 +427,36 @@ def _typed_rounded(M):
 
 def _single_precision(answer):
     """Does a numeric answer hold numpy floats of less than double precision (float32 ...)?"""
-    items = answer if isinstance(answer, (list, tuple)) else [answer]
+    items = answer if type(answer) in (list, tuple) else [answer]
     for item in items:
-        dtype = getattr(item, "dtype", None)
-        if dtype is not None and (dtype.kind, dtype.itemsize) in {("f", 2), ("f", 4), ("c", 8)}:
-            return True
-        if isinstance(item, (list, tuple)) and _single_precision(item):
+        kind = type(item)
+        if kind is np.ndarray or kind in (np.float16, np.float32, np.complex64):
+            if (item.dtype.kind, item.dtype.itemsize) in {("f", 2), ("f", 4), ("c", 8)}:
+                return True
+        if kind in (list, tuple) and _single_precision(item):
             return True
     return False
 
 
-_MAX_REACH = 1024  # cells scanned each side: float32 rounding of entries up to about 4
+_SIMPLE_BASES = (1.0, np.pi, np.sqrt(2), np.sqrt(3))
 
 
-def _single_precision_matches(name, v, cells):
-    """Per entry: is it within float32 rounding (a few units of 2⁻²⁴, relative) of the right
-    cell? Scans the neighbouring cells of the digest grid."""
-    if len(np.ravel(v)) != len(cells):
-        return np.zeros(len(cells), dtype=bool)
+def _single_precision_matches(name, fp, v):
+    """Per entry: is it the single-precision rounding of the right one? The digests cannot be
+    scanned over a float32 rounding interval (tens of cells, a stretched digest each), so the
+    simple values near the entry (a fraction, times 1, π, √2 or √3) are tried."""
+    from fractions import Fraction
+
     ok = []
-    for i, (x, (off, dig)) in enumerate(zip(np.ravel(v), cells)):
-        reach = int(np.ceil(8 * np.finfo(np.float32).eps * max(1.0, abs(x)) / E.STEP))
-        if reach > _MAX_REACH:  # a huge entry: not worth the scan
-            ok.append(False)
-            continue
-        centre = int(np.floor((x + off * E.STEP / 2) / E.STEP))
-        ok.append(any(E.digest(name, i, centre + k) == dig for k in range(-reach, reach + 1)))
+    for i, x in enumerate(v):
+        ulp = float(np.spacing(np.float32(abs(x)))) if abs(x) < 1e6 else None
+        right = _entry_ok(name, fp, i, x)
+        for base in _SIMPLE_BASES if ulp and not right else ():
+            guess = float(Fraction(x / base).limit_denominator(360)) * base
+            if abs(guess - x) <= 2 * ulp and _entry_ok(name, fp, i, guess):
+                right = True
+                break
+        ok.append(right)
     return np.array(ok)
 
 
@@ -394,10 +470,10 @@ _SINGLE = (
 def judge_value(ex, fp, answer):
     form, M = read_answer(answer, ex.answer.shape, set(), numeric=True)
     v = _numbers(M)
-    if E.match_cells(ex.name, v, fp["cells"]).all():
+    if _all_right(ex.name, fp, v):
         return "correct", "correct."
     if _single_precision(answer):
-        ok = _single_precision_matches(ex.name, v, fp["cells"])
+        ok = _single_precision_matches(ex.name, fp, v)
         if ok.all():
             return "wrong", "right to single precision, but " + _SINGLE
         return "wrong", _positions(
@@ -409,12 +485,15 @@ def judge_value(ex, fp, answer):
     return "wrong", hint
 
 
+# ------------------------------------------------------------------------------ choices
+
+
 def judge_choice(ex, fp, answer):
     letters = read_choice(answer, ex.answer.letters)
-    if E.digest(ex.name, "choice", letters) == fp["digest"]:
+    if D.stretched(ex.name, "letters", letters) == fp["letters"]:
         return "correct", "correct."
-    for mid, dig in fp["mistakes"].items():
-        if E.digest(ex.name, "choice", letters) == dig:
+    for mid, rec in fp["mistakes"].items():
+        if D.stretched(ex.name, "letters", apply_letters(rec["mask"], letters)) == fp["letters"]:
             return "wrong", ex.mistakes[mid]
     return "wrong", "that is not the right set of letters."
 

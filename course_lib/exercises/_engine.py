@@ -1,31 +1,32 @@
-r"""The checking engine: sample points, fingerprints, the comparison and the hints.
+r"""The checking engine: sample points, evaluation, and the features that are digested.
 
-Nothing here knows an expected answer. What the engine compares with is a *fingerprint* made by
-the repository tool ``tools/exercise_fingerprints.py`` from the instructor's reference solutions:
+Nothing here knows an expected answer. The checker compares a student's answer with
+*fingerprints* that the repository tool ``tools/exercise_fingerprints.py`` makes from the
+instructor's reference solutions: key-stretched digests of rounded values
+(:mod:`course_lib.exercises._digests`), never the values themselves.
 
-- a symbolic answer (:class:`~course_lib.exercises._model.Expr`): its values at
-  :data:`NPOINTS` seeded points spread over the whole domain (ω on the whole unit sphere, angles
-  over two full turns each way, t over [−4, 4], ...) and a salted digest of its exact normal form
-  (expanded, reduced modulo :math:`\lVert\omega\rVert = 1` where ω is a unit vector);
-- a numeric answer (:class:`~course_lib.exercises._model.Value`): a salted digest of every entry
-  rounded to a grid of step :math:`4\,\mathrm{TOL}`, on whichever of two offset grids keeps the
-  value at least TOL from a cell edge, so an entry within TOL of the right one always lands in
-  the right cell (and one more than :math:`4\,\mathrm{TOL}` away never does);
-- a choice (:class:`~course_lib.exercises._model.Choice`): a salted digest of the letters.
+**Sample points** (:func:`points`). A symbolic answer is evaluated at seeded points over the
+whole domain (ω on the whole unit sphere or anywhere, angles over two full turns each way, t
+over [−4, 4], ...), and a quarter of them near zero (small angles, small t), where truncated
+series agree. The points come in *pairs*: every base point is repeated with one *unit* drawn
+afresh (one scalar symbol, one coordinate of a free vector, a whole unit vector or rotation),
+everything else kept. An answer that ignores a unit (a function of α alone where β matters,
+coefficients in θ alone where ‖ω‖ matters) takes the same value on both points of such a pair
+where the right answer does not, so it cannot match by interpolating the points.
 
-A symbolic answer is right when its normal form has the stored digest (exact), or else when at
-every point :math:`\lVert A(p_k) - E(p_k)\rVert \le \mathrm{TOL}\,\max(1, \lVert E(p_k)\rVert)`.
-Known mistakes have fingerprints too; hints come from those and from transformations of the
-student's own answer (its negative, its transpose, degrees for radians ...), never from the
-expected answer.
+**Features** (:func:`features`). From the values :math:`A` of an answer at the points come the
+numbers that are rounded and digested: the value itself (two projections, grid
+:data:`STEP_VALUE`), and for the hints, one projection each (grid :data:`STEP_HINT`) of: the
+values near zero, each entry, :math:`A/\lVert A\rVert` (a constant multiple), :math:`A_k /
+\lVert A_k\rVert` at every point (a factor that changes with the symbols), the traceless part
+(the I term), and the coefficients of I, W, W² of a polynomial in W. A numeric answer has one
+digest per entry (grid :data:`STEP_NUMBER`).
 """
 
 from __future__ import annotations
 
-import hashlib
 import zlib
 from functools import lru_cache
-from math import comb
 
 import numpy as np
 import sympy as sp
@@ -42,14 +43,18 @@ from sympy.matrices.expressions import (
 
 from .. import symbolic as S
 from ..tolerance import TOL
-from ._reading import Rejected, degree_bound
+from . import _digests as D
+from ._reading import Rejected
 
-NPOINTS = 40
-STEP = 4 * TOL
-_SALT = "rotations-course/exercises/v1"
+#: Grid of a numeric entry: within TOL always passes, more than 4 TOL away never does.
+STEP_NUMBER = 3 * TOL
+#: Grid of the projections of a symbolic answer (its verdict) and of the hints' features.
+STEP_VALUE = 8 * TOL
+STEP_HINT = 32 * TOL
+#: Points: at least this many, in pairs over the units of the exercise.
+MIN_POINTS = 48
 _TURN = 4 * np.pi
-_MAX_EXACT_TERMS = 300
-_MAX_EXACT_DEGREE = 8
+_NEAR = 0.3  # half-width of the scalar ranges of the points near zero
 
 #: What each stand-in symbol of a form means in the base symbols.
 SCALAR_DEFINITIONS = {S.xx: S.x.dot(S.x), S.yy: S.y.dot(S.y), S.xy: S.x.dot(S.y)}
@@ -73,12 +78,6 @@ _SCALAR_RANGES = {
     S.t: (-4.0, 4.0),
     S.a: (-1.5, 1.5),
 }
-
-
-def digest(*parts):
-    """Salted SHA-256 digest (16 hex digits) of the parts, joined by ``|``."""
-    text = "|".join([_SALT, *map(str, parts)])
-    return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 # ------------------------------------------------------------------------------ sample points
@@ -114,27 +113,68 @@ def _random_rotations(rng, n):
     )
 
 
+def _units(spec):
+    """The units that are drawn afresh one at a time: tuples of base symbols."""
+    wanted = set(base_symbols(spec))
+    units = []
+    for vec in _VECTORS:
+        if vec == S.omega and spec.unit_omega:
+            units.append(tuple(vec))
+        else:
+            units.extend((s,) for s in vec)
+    units.extend(tuple(MATRIX_DEFINITIONS[m]) for m in _ROTATIONS)
+    units.extend((s,) for s in (*_SCALAR_RANGES, S.x_0))
+    return [u for u in units if set(u) & wanted]
+
+
+def _draw(rng, unit, spec, near):
+    """Fresh values of one unit: {symbol: float}."""
+    first = unit[0]
+    if len(unit) == 9:  # a rotation
+        return dict(zip(unit, _random_rotations(rng, 1)[0].ravel()))
+    if len(unit) == 3:  # the unit vector ω
+        v = rng.normal(size=3)
+        return dict(zip(unit, v / np.linalg.norm(v)))
+    if first in S.omega:  # a coordinate of a free ω: |ω| from about 0.3 to 2
+        return {first: rng.uniform(0.2, 1.2) * rng.choice([-1.0, 1.0])}
+    if first in _SCALAR_RANGES:
+        lo, hi = _SCALAR_RANGES[first]
+        return {first: rng.uniform(-_NEAR, _NEAR) if near and first != S.a else rng.uniform(lo, hi)}
+    if first == S.x_0:
+        return {first: rng.uniform(0.5, 2.0) * rng.choice([-1.0, 1.0])}
+    return {first: rng.normal()}  # a coordinate of x, y, z or d
+
+
 @lru_cache(maxsize=64)
 def points(name, spec):
-    """Seeded values of the base symbols: {symbol: array of NPOINTS floats} (cached)."""
+    """Seeded values of the base symbols, ``{symbol: array}``, and the mask of the points near
+    zero (cached). Base points, each followed by its variants with one unit drawn afresh."""
     rng = np.random.default_rng(zlib.crc32(name.encode()))
-    wanted = set(base_symbols(spec))
-    out = {}
-    for vec in _VECTORS:
-        v = rng.normal(size=(NPOINTS, 3))
-        if vec == S.omega:
-            v /= np.linalg.norm(v, axis=1, keepdims=True)
-            if not spec.unit_omega:
-                v *= rng.uniform(0.3, 2.0, size=(NPOINTS, 1))
-        out.update({s: v[:, i] for i, s in enumerate(vec)})
-    for mat in _ROTATIONS:
-        rots = _random_rotations(rng, NPOINTS)
-        for (i, j), s in np.ndenumerate(np.array(MATRIX_DEFINITIONS[mat], dtype=object)):
-            out[s] = rots[:, i, j]
-    for s, (lo, hi) in _SCALAR_RANGES.items():
-        out[s] = rng.uniform(lo, hi, NPOINTS)
-    out[S.x_0] = rng.uniform(0.5, 2.0, NPOINTS) * rng.choice([-1.0, 1.0], NPOINTS)
-    return {s: v for s, v in out.items() if s in wanted}
+    units = _units(spec)
+    per_base = 1 + len(units)
+    bases = max(8, -(-MIN_POINTS // per_base))
+    rows, near = [], []
+    for k in range(bases):
+        is_near = k % 4 == 0
+        base = {}
+        for unit in units:
+            base.update(_draw(rng, unit, spec, is_near))
+        rows.append(base)
+        for unit in units:
+            rows.append({**base, **_draw(rng, unit, spec, is_near)})
+        near.extend([is_near] * per_base)
+    syms = base_symbols(spec)
+    pts = {s: np.array([r[s] for r in rows]) for s in syms}
+    mask = np.array(near)
+    mask.flags.writeable = False
+    for v in pts.values():
+        v.flags.writeable = False
+    return pts, mask
+
+
+def npoints(pts):
+    """Number of points of a points dict."""
+    return len(next(iter(pts.values()))) if pts else 1
 
 
 # ------------------------------------------------------------------------------ evaluation
@@ -168,14 +208,15 @@ def numeric_function(syms, M):
 
 
 def _lambdified(M, syms, pts):
-    """Values of an explicit matrix at the points: complex array (NPOINTS, rows, cols)."""
+    """Values of an explicit matrix at the points: complex array (points, rows, cols)."""
+    n = npoints(pts)
     f = numeric_function(syms, M)
     args = [pts[s].astype(complex) for s in syms]
     with np.errstate(all="ignore"):
         rows = f(*args)
     return np.stack(
         [
-            np.stack([np.broadcast_to(np.asarray(v, dtype=complex), (NPOINTS,)) for v in row], -1)
+            np.stack([np.broadcast_to(np.asarray(v, dtype=complex), (n,)) for v in row], -1)
             for row in rows
         ],
         -2,
@@ -190,9 +231,9 @@ def _eval_matrix_expr(e, syms, pts, cache):
             cache[key] = _lambdified(MATRIX_DEFINITIONS[e], syms, pts)
         return cache[key]
     if kind is Identity:
-        return np.broadcast_to(np.eye(e.shape[0], dtype=complex), (NPOINTS, *e.shape))
+        return np.broadcast_to(np.eye(e.shape[0], dtype=complex), (npoints(pts), *e.shape))
     if kind is ZeroMatrix:
-        return np.zeros((NPOINTS, *e.shape), dtype=complex)
+        return np.zeros((npoints(pts), *e.shape), dtype=complex)
     if not isinstance(e, MatrixExpr) or isinstance(e, sp.MatrixBase):
         return _lambdified(
             sp.ImmutableMatrix(e) if isinstance(e, sp.MatrixBase) else sp.ImmutableMatrix([[e]]),
@@ -227,7 +268,7 @@ _SYMBOL_VALUES = {}
 
 
 def values(form, M, syms, pts):
-    """Real values (NPOINTS, rows, cols) of an answer read by ``read_answer``."""
+    """Real values (points, rows, cols) of an answer read by ``read_answer``."""
     if form == "matrix":
         entry = _SYMBOL_VALUES.get(id(pts))
         if entry is None or entry[0] is not pts:  # keeps pts alive: ids never reused
@@ -249,54 +290,82 @@ def values(form, M, syms, pts):
     return vals.real
 
 
-def exact_form(name, M, unit_omega):
-    """Salted digest of the exact normal form of an explicit answer, or None if too big."""
-    entries = []
-    for e in M.xreplace(SCALAR_DEFINITIONS):
-        n, deg = len(e.free_symbols), degree_bound(e)
-        if deg > _MAX_EXACT_DEGREE or comb(n + deg, n) > _MAX_EXACT_TERMS or sp.count_ops(e) > 200:
-            return None
-        e = sp.expand(e)
-        if unit_omega and e.free_symbols & set(S.omega):
-            try:
-                e = sp.expand(S.unit_reduce(e))
-            except (ValueError, sp.PolynomialError):
-                pass
-        entries.append(sp.srepr(e))
-    return digest(name, "exact", *entries)
+# ------------------------------------------------------------------------------ features
 
 
-def close(A, E):
-    """At every point ‖A − E‖ ≤ TOL·max(1, ‖E‖) (Frobenius / Euclidean norm)."""
-    A, E = np.asarray(A, dtype=float), np.asarray(E, dtype=float)
-    if A.shape != E.shape:
-        return False
-    axes = tuple(range(1, A.ndim))
-    err = np.sqrt(np.sum((A - E) ** 2, axis=axes))
-    scale = np.maximum(1.0, np.sqrt(np.sum(E**2, axis=axes)))
-    return bool(np.all(err <= TOL * scale))
+def _sign(A):
+    """+1 or -1: the sign that makes the answer's projection on a fixed direction positive."""
+    r = np.cos(np.arange(1, A.size + 1) * 1.618).reshape(A.shape)
+    return 1.0 if np.sum(r * A) >= 0 else -1.0
 
 
-# ------------------------------------------------------------------------------ numeric digests
+def w_coefficients(A, pts):
+    """Coefficients (points, 3) of A (points, 3, 3) in the basis I, Ŵ, Ŵ² at each point, or
+    None when A is not in their span."""
+    w = np.stack([pts[s] for s in S.omega], -1)
+    H = np.zeros((len(w), 3, 3))
+    H[:, 0, 1], H[:, 0, 2], H[:, 1, 2] = -w[:, 2], w[:, 1], -w[:, 0]
+    H -= np.swapaxes(H, -1, -2)
+    basis = np.stack([np.broadcast_to(np.eye(3), H.shape), H, H @ H], -1).reshape(-1, 9, 3)
+    coeffs = np.stack([np.linalg.lstsq(b, m.ravel(), rcond=None)[0] for b, m in zip(basis, A)])
+    fitted = np.einsum("kij,kj->ki", basis, coeffs)
+    if not np.allclose(fitted, A.reshape(-1, 9), rtol=1e-9, atol=1e-9):
+        return None
+    return coeffs
 
 
-def value_cells(name, vec):
-    """Fingerprint of a numeric answer: [offset index, digest] for each entry."""
-    out = []
-    for i, v in enumerate(np.ravel(vec)):
-        off = 0 if abs((v / STEP) % 1 - 0.5) <= 0.25 else 1
-        cell = int(np.floor((v + off * STEP / 2) / STEP))
-        out.append([off, digest(name, i, cell)])
+def _uses_w(spec):
+    return spec.matrix_degree is not None and S.W in set(spec.allowed or ())
+
+
+def features(name, spec, A, pts, near, which):
+    """The projections (label -> array) of the values A (points, *shape) named in ``which``:
+    "value", "near", "entries", "scaled", "direction", "traceless", "coefficients"."""
+    out = {}
+    shape = spec.shape
+    if "value" in which:
+        out["value"] = D.projections(name, "value", A, 2)
+    if "near" in which:
+        out["near"] = D.projections(name, "near", A[near], 1)
+    if "entries" in which and shape != ():
+        flat = A.reshape(len(A), -1)
+        for j in range(flat.shape[1]):
+            out[f"entry{j}"] = D.projections(name, f"entry{j}", flat[:, j], 1)
+    norm = np.sqrt(np.sum(A * A))
+    if "scaled" in which and norm > 1e-6:
+        out["scaled"] = D.projections(name, "scaled", _sign(A) * A / norm, 1)
+    if "direction" in which and shape != ():
+        axes = tuple(range(1, A.ndim))
+        norms = np.sqrt(np.sum(A * A, axis=axes, keepdims=True))
+        if np.all(norms > 1e-6):
+            unit = A / norms
+            signs = np.array([_sign(a) for a in unit]).reshape((-1,) + (1,) * len(shape))
+            out["direction"] = D.projections(name, "direction", signs * unit, 1)
+    if "traceless" in which and len(shape) == 2 and shape[0] == shape[1]:
+        tr = np.trace(A, axis1=-2, axis2=-1) / shape[0]
+        out["traceless"] = D.projections(name, "traceless", A - tr[:, None, None] * np.eye(3), 1)
+    if "coefficients" in which and _uses_w(spec):
+        coeffs = w_coefficients(A, pts)
+        if coeffs is not None:
+            for j in range(3):
+                out[f"coef{j}"] = D.projections(name, f"coef{j}", coeffs[:, j], 1)
+                out[f"-coef{j}"] = D.projections(name, f"coef{j}", -coeffs[:, j], 1)
     return out
 
 
-def match_cells(name, vec, cells):
-    """Per entry: does the entry fall in the stored cell?"""
-    flat = np.ravel(vec)
-    if len(flat) != len(cells):
-        return np.zeros(len(cells), dtype=bool)
-    ok = []
-    for i, (v, (off, dig)) in enumerate(zip(flat, cells)):
-        cell = int(np.floor((v + off * STEP / 2) / STEP)) if np.isfinite(v) else None
-        ok.append(cell is not None and digest(name, i, cell) == dig)
-    return np.array(ok)
+def step_of(label):
+    """The grid step of a feature."""
+    return STEP_VALUE if label == "value" else STEP_HINT
+
+
+def structure(A):
+    """ "skew", "symmetric" or "" for the values A (points, n, n) of a square matrix answer."""
+    if A.ndim != 3 or A.shape[1] != A.shape[2]:
+        return ""
+    At = np.swapaxes(A, -1, -2)
+    scale = max(1.0, float(np.max(np.abs(A))))
+    if np.max(np.abs(A + At)) <= TOL * scale:
+        return "skew"
+    if np.max(np.abs(A - At)) <= TOL * scale:
+        return "symmetric"
+    return ""

@@ -2,8 +2,8 @@ r"""What an exercise is: its statement, level, points and the kind of answer it 
 
 The exercise bank (:mod:`course_lib.exercise_bank`) is data built from these classes; the engine
 (:mod:`course_lib.exercises._engine`) checks answers against them. Nothing here holds an expected
-answer: the engine compares with *fingerprints* (values at seeded points, salted digests) that a
-repository tool generates from the instructor's reference solutions.
+answer: the engine compares with *fingerprints* (salted, key-stretched digests of rounded values)
+that a repository tool generates from the instructor's reference solutions.
 """
 
 from __future__ import annotations
@@ -120,7 +120,8 @@ class Exercise:
     tip : str
         A pointer to the notes, added to the message of a wrong answer.
     mistakes : dict
-        Known mistakes: id -> hint; their fingerprints are stored with the expected ones.
+        Known mistakes: id -> hint; each is recognised by a transformation of the student's
+        answer that its fingerprint names (or, failing one, by digests of its values).
     properties : tuple
         ``(residual, message)`` pairs for symbolic answers: ``residual(M)`` (M the answer as an
         explicit matrix) must vanish; the first that does not gives ``message`` as hint.

@@ -12,13 +12,14 @@ well under a second: nothing is expanded or simplified before they hold.
 
 from __future__ import annotations
 
+import sys
 from decimal import Decimal
 from fractions import Fraction
 
 import mpmath
 import numpy as np
 import sympy as sp
-from sympy.core.function import AppliedUndef
+from sympy.core.function import UndefinedFunction
 from sympy.matrices.expressions import (
     Identity,
     MatAdd,
@@ -37,6 +38,9 @@ MAX_NODES = 800
 MAX_DEGREE = 24
 MAX_MATRIX_DEGREE = 6
 MAX_INTEGER = 10**30
+MAX_POWER = 400
+MAX_DEPTH = 40
+MAX_ENTRIES = 81
 # Numbers at least this large are refused: no answer is near it, and digests of them overflow.
 MAX_MAGNITUDE = 1e300
 TOO_LARGE = "a number of 1e300 or more, larger than any answer here"
@@ -92,27 +96,52 @@ def _too_complex(what):
     return Rejected(f"too complex to check: simplify it first ({what}).", "too complex")
 
 
+_HEAPTYPE = 1 << 9  # Py_TPFLAGS_HEAPTYPE: set on every class made by a class statement
+_LIBRARIES = {"sympy", "numpy", "builtins", "mpmath", "fractions", "decimal"}
+
+
+def _is(kind, classes):
+    """Is ``kind`` (a type) one of ``classes`` or a subclass? Uses the MRO of the type only."""
+    return issubclass(kind, classes)
+
+
+def _type_name(kind):
+    return type.__getattribute__(kind, "__name__")
+
+
+def _genuine(kind):
+    """Is ``kind`` a class of sympy, numpy or Python itself (not a student's subclass, whatever
+    its ``__module__`` says)? Looked up in the module it names, compared by identity."""
+    if not type.__getattribute__(kind, "__flags__") & _HEAPTYPE:
+        return True  # a static type, written in C: no class statement makes one
+    name = str(type.__getattribute__(kind, "__module__"))
+    if name.split(".")[0] not in _LIBRARIES:
+        return False
+    module = sys.modules.get(name)
+    return module is not None and getattr(module, _type_name(kind), None) is kind
+
+
 def _not_allowed(node):
     kind = type(node)
-    name = getattr(kind, "__name__", str(kind))
-    if isinstance(node, AppliedUndef):
+    name = _type_name(kind)
+    if type(kind) is UndefinedFunction:
         return Rejected(
-            f"not allowed here: the undefined function {node} (give an explicit expression).",
+            f"not allowed here: the undefined function {name} (give an explicit expression).",
             "not allowed",
         )
-    if (getattr(kind, "__module__", None) or "").split(".")[0] != "sympy":
+    if not _genuine(kind) or not _is(kind, sp.Basic):
         return Rejected(
             f"not allowed here: your answer contains an object of type {name} "
             "(a class of your own); build it from plain sympy objects.",
             "not allowed",
         )
-    if isinstance(node, sp.Inverse):
+    if _is(kind, sp.Inverse):
         why = "the exercise asks for the answer without an inverse"
-    elif isinstance(node, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
+    elif _is(kind, (sp.Integral, sp.Sum, sp.Product, sp.Derivative)):
         why = "evaluate it first (.doit()) and simplify the result"
-    elif isinstance(node, sp.Order):
+    elif _is(kind, sp.Order):
         why = "a series keeps its O(...) term: drop it with .removeO()"
-    elif isinstance(node, MatrixElement):
+    elif _is(kind, MatrixElement):
         return Rejected(
             f"not allowed here: {node}, an entry of a matrix symbol or matrix expression "
             "(from indexing it, or from sp.Matrix(...) of a matrix expression). Give the "
@@ -135,14 +164,17 @@ def _check_node(node, symbols, numeric):
         return
     if kind in _SCALAR_TYPES or kind in _MATRIX_TYPES or kind in _EXPLICIT:
         if kind is sp.Symbol or kind is MatrixSymbol:
-            _check_symbol(node, symbols, numeric)
+            if symbols is not None:
+                _check_symbol(node, symbols, numeric)
         elif kind is sp.Integer or kind is sp.Rational:
             if max(abs(node.p), node.q) > MAX_INTEGER:
                 raise _too_complex(f"a number with more than {len(str(MAX_INTEGER))} digits")
         elif kind is sp.Float and not abs(float(node)) < MAX_MAGNITUDE:
             raise _too_complex(TOO_LARGE)
+        elif kind is sp.Pow or kind is MatPow:
+            _check_power(node.args[1])
         return
-    if numeric and kind is sp.Abs:
+    if (numeric or numeric is None) and kind is sp.Abs:
         return
     raise _not_allowed(node)
 
@@ -166,20 +198,34 @@ def _check_symbol(s, symbols, numeric):
     )
 
 
+def _check_power(exponent):
+    """A power is bounded before anything evaluates it (2**10**29 would never finish)."""
+    kind = type(exponent)
+    if kind is sp.Integer or kind is sp.Rational:
+        if abs(exponent.p) > MAX_POWER * exponent.q:
+            raise _too_complex(f"a power above {MAX_POWER}")
+
+
 def _walk(expr, symbols, numeric):
-    """Check every node of a sympy object; return the number of nodes."""
+    """Check every node of a sympy object, its type first and by identity, its depth and the
+    number of nodes; return the number of nodes. No method of a node is called before its type
+    is known to be one of sympy's own allowed classes."""
     count = 0
-    stack = [expr]
+    stack = [(expr, 0)]
     while stack:
-        node = stack.pop()
+        node, depth = stack.pop()
         count += 1
         if count > MAX_NODES:
             raise _too_complex(f"more than {MAX_NODES} terms and factors")
+        if depth > MAX_DEPTH:
+            raise _too_complex(f"nested more than {MAX_DEPTH} levels deep")
         _check_node(node, symbols, numeric)
         if type(node) in _EXPLICIT:
-            stack.extend(node)
+            if node.rows * node.cols > MAX_ENTRIES:
+                raise Rejected(f"wrong shape: your matrix is {node.rows}x{node.cols}.")
+            stack.extend((e, depth + 1) for e in node)
         elif type(node) is not MatrixSymbol:
-            stack.extend(node.args)
+            stack.extend((a, depth + 1) for a in node.args)
     return count
 
 
@@ -243,22 +289,58 @@ def matrix_degree(e):
     return out
 
 
+#: numpy's own scalar types, compared by identity: a subclass (even one claiming
+#: ``__module__ = "numpy"``) is a class of the student's own and none of its methods is called.
+_NUMPY_INTS = {
+    np.int8,
+    np.int16,
+    np.int32,
+    np.int64,
+    np.uint8,
+    np.uint16,
+    np.uint32,
+    np.uint64,
+}
+_NUMPY_FLOATS = {np.float16, np.float32, np.float64, np.longdouble}
+_NUMPY_COMPLEX = {np.complex64, np.complex128, np.clongdouble}
+
+
+def _decimal(v):
+    """A Decimal as an exact sympy number, its size checked before anything is computed."""
+    if not v.is_finite():
+        raise Rejected("your answer contains nan or infinity.")
+    if v.is_zero():
+        return sp.Integer(0)
+    if v.adjusted() >= 300:  # the exponent of the leading digit: no digit string is built
+        raise _too_complex(TOO_LARGE)
+    if v.adjusted() < -300 or len(v.as_tuple().digits) > 40:
+        return sp.Float(float(v))
+    return sp.Rational(*v.as_integer_ratio())
+
+
 def _scalar(v):
     kind = type(v)
     if kind in _EXPLICIT and v.shape == (1, 1):  # x.T * y: a 1x1 Matrix stands for the number
         return _scalar(v[0, 0])
     if kind is bool or kind is np.bool_:
         raise Rejected("an entry of your answer is a truth value (True/False), not a number.")
-    numpy = kind.__module__ == "numpy"  # numpy's own scalar types, not a subclass of them
-    if kind is int or numpy and isinstance(v, np.integer):
+    if kind is int or kind in _NUMPY_INTS:
+        if kind is int and v.bit_length() > 1000:  # before int(), str() or any arithmetic
+            raise _too_complex(TOO_LARGE)
         return sp.Integer(int(v))
     if kind is Fraction:
+        if max(v.numerator.bit_length(), v.denominator.bit_length()) > 1000:
+            raise _too_complex(TOO_LARGE)
         return sp.Rational(v.numerator, v.denominator)
-    if kind in _FLOATS or numpy and isinstance(v, np.floating):
-        if not (v.is_finite() if kind is Decimal else np.isfinite(float(v))):
+    if kind is Decimal:
+        return _decimal(v)
+    if kind in _FLOATS or kind in _NUMPY_FLOATS:
+        if not np.isfinite(float(v)):
             raise Rejected("your answer contains nan or infinity.")
-        return sp.Rational(str(v)) if kind is Decimal else sp.Float(float(v))
-    if kind in _COMPLEX or numpy and isinstance(v, np.complexfloating):
+        if not abs(float(v)) < MAX_MAGNITUDE:
+            raise _too_complex(TOO_LARGE)
+        return sp.Float(float(v))
+    if kind in _COMPLEX or kind in _NUMPY_COMPLEX:
         if v.imag != 0:
             raise Rejected("your answer is complex; a real answer is expected.")
         return _scalar(float(v.real))
@@ -272,35 +354,33 @@ def _scalar(v):
             "your answer is a string (text), not a string of numbers or "
             "expressions: give sympy expressions or numbers, not a string."
         )
-    if isinstance(v, sp.Basic) and (getattr(kind, "__module__", None) or "")[:6] != "sympy.":
+    if _is(kind, (sp.Basic, sp.MatrixBase)) or not _genuine(kind):
+        return _sympy_entry(v, kind)
+    raise Rejected(
+        f"could not read an entry of type {_type_name(kind)} as a number or an expression."
+    )
+
+
+def _sympy_entry(v, kind):
+    """An entry that is a sympy object: screened by type before anything else."""
+    if not _genuine(kind):
         raise Rejected(
-            f"not allowed here: an entry of type {kind.__name__} (a class of your "
+            f"not allowed here: an entry of type {_type_name(kind)} (a class of your "
             "own); give plain numbers or sympy expressions.",
             "not allowed",
         )
-    if isinstance(v, sp.Basic) and not isinstance(v, (sp.MatrixBase, MatrixExpr)):
-        if not isinstance(v, sp.Expr):
-            raise Rejected(
-                f"your answer is a {type(v).__name__} (an equation or a truth "
-                "value?), not an expression; for an Eq from dsolve take its .rhs."
-            )
-        return v
-    if (getattr(kind, "__module__", None) or "").split(".")[0] not in (
-        "builtins",
-        "numpy",
-        "sympy",
-    ):
-        raise Rejected(
-            f"not allowed here: an entry of type {kind.__name__} (a class of your "
-            "own); give plain numbers or sympy expressions.",
-            "not allowed",
-        )
-    if isinstance(v, (sp.MatrixBase, MatrixExpr)):
+    if _is(kind, (sp.MatrixBase, MatrixExpr)):
         raise Rejected(
             f"an entry of your answer is itself a {v.shape[0]}x{v.shape[1]} matrix "
-            f"({kind.__name__}): give the matrix itself, not a list that holds it."
+            f"({_type_name(kind)}): give the matrix itself, not a list that holds it."
         )
-    raise Rejected(f"could not read an entry of type {kind.__name__} as a number or an expression.")
+    if not _is(kind, sp.Expr):
+        raise Rejected(
+            f"your answer is a {_type_name(kind)} (an equation or a truth "
+            "value?), not an expression; for an Eq from dsolve take its .rhs."
+        )
+    _walk(v, None, None)  # types, depth and size only; symbols are checked later
+    return v
 
 
 _ARRAYS = (
@@ -333,18 +413,26 @@ def _rows(answer):
             raise Rejected("your array holds truth values (True/False), not numbers.")
         if answer.dtype.kind not in "iufcO":
             raise Rejected(f"could not read an array of dtype {answer.dtype} as numbers.")
-        if answer.ndim > 2 or answer.size > 81:
+        if answer.ndim > 2 or answer.size > MAX_ENTRIES:
             raise Rejected(f"wrong shape: your array has shape {answer.shape}.")
         answer = answer.tolist()
         kind = type(answer)
     if kind not in (list, tuple):
         return [[_scalar(answer)]], "a scalar"
+    if len(answer) > MAX_ENTRIES:
+        raise Rejected(f"wrong shape: your answer is a {kind.__name__} of {len(answer)} items.")
     rows = []
     for r in answer:
         r = _plain(r)
         if type(r) is np.ndarray:
+            if r.size > MAX_ENTRIES:
+                raise Rejected(f"wrong shape: a row of your answer has shape {r.shape}.")
             r = r.tolist()
         if type(r) in (list, tuple):
+            if len(r) > MAX_ENTRIES:
+                raise Rejected(
+                    f"wrong shape: a row of your answer is a {type(r).__name__} of {len(r)} items."
+                )
             if any(type(_plain(v)) in (list, tuple, np.ndarray) for v in r):
                 raise Rejected(
                     "wrong shape: your answer is nested three levels deep (a list inside a "
@@ -388,7 +476,8 @@ def _refuse_numpy_of_matrix_expressions(array):
     """A matrix expression mixed with a numpy array (``u @ u.T - np.eye(3)``) becomes a numpy
     array of its entries: say so, instead of blaming the entries."""
     for entry in array.flat:
-        if isinstance(entry, sp.Basic) and entry.has(MatrixElement):
+        kind = type(entry)
+        if _is(kind, sp.Basic) and _genuine(kind) and entry.has(MatrixElement):
             raise Rejected(
                 "your answer mixes a matrix symbol with a numpy array (np.eye, np.array ...), "
                 "which turns it into a numpy array of entries; write the numbers with sympy "
@@ -406,8 +495,8 @@ def read_answer(answer, shape, symbols, numeric=False):
         raise Rejected("no answer yet (the answer variable is still None).", "no answer")
     answer = _plain(answer)
     kind = type(answer)
-    if isinstance(answer, MatrixExpr) and kind not in _EXPLICIT:
-        if kind not in _MATRIX_TYPES and kind is not sp.MatrixSymbol:
+    if _is(kind, MatrixExpr) and kind not in _EXPLICIT:
+        if kind not in _MATRIX_TYPES:
             raise _not_allowed(answer)
         _walk(answer, symbols, numeric)
         matrix_degree(answer)
@@ -415,22 +504,26 @@ def read_answer(answer, shape, symbols, numeric=False):
             answer, shape, f"a {answer.shape[0]}x{answer.shape[1]} matrix expression"
         )
     if kind in _EXPLICIT:
+        _walk(answer, None, None)  # size, types and depth before the copy
         M, got = sp.ImmutableMatrix(answer), f"a {answer.rows}x{answer.cols} matrix"
-    elif isinstance(answer, sp.MatrixBase) or (
-        isinstance(answer, (list, tuple, np.ndarray)) and kind not in (list, tuple, np.ndarray)
+    elif _is(kind, sp.MatrixBase) or (
+        _is(kind, (list, tuple, np.ndarray)) and kind not in (list, tuple, np.ndarray)
     ):
         raise (
             _not_allowed(answer)
-            if isinstance(answer, sp.Basic)
+            if _is(kind, sp.Basic)
             else Rejected(
-                f"not allowed here: an object of type {kind.__name__} (a class of your own); "
-                "give a plain list, tuple, numpy array or sympy Matrix.",
+                f"not allowed here: an object of type {_type_name(kind)} (a class of your "
+                "own); give a plain list, tuple, numpy array or sympy Matrix.",
                 "not allowed",
             )
         )
     else:
-        if kind is np.ndarray and answer.ndim == 0:
+        if kind is np.ndarray and answer.ndim == 0:  # a 0-d array is a scalar
             answer = answer.item()
+            kind = type(answer)
+        if kind is np.ndarray and answer.size > MAX_ENTRIES:
+            raise Rejected(f"wrong shape: your array has shape {answer.shape}.")
         if kind is np.ndarray and answer.dtype == object:
             _refuse_numpy_of_matrix_expressions(answer)
         rows, got = _rows(answer)

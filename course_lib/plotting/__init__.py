@@ -58,6 +58,7 @@ module                          what it holds
 :mod:`.figures_exponential`     chapter 03: the pendulum, Rodrigues' circle
 :mod:`.figures_accuracy`        error plots: the series' convergence, errors near a limit
 :mod:`.figures_composition`     chapter 04: frames side by side, the geodesic
+:mod:`.figures_orientation`     chapter 05: Euler turns, gimbal lock, the double cover, slerp
 ==============================  ===============================================================
 
 Input is checked by the one validation layer, :mod:`course_lib._arrays`.
@@ -70,6 +71,13 @@ from .axes import _require_3d as _require_3d  # course_lib.interactive checks it
 from .figures_accuracy import plot_convergence, plot_error_curves
 from .figures_composition import frame_panels, plot_geodesic
 from .figures_exponential import draw_pendulum, plot_rodrigues_circle
+from .figures_orientation import (
+    angle_streams,
+    double_cover,
+    euler_steps,
+    gimbal_axes,
+    slerp_speed,
+)
 from .primitives import ARROW_HEAD as ARROW_HEAD
 from .primitives import (
     FRAME_COLORS,
@@ -106,5 +114,10 @@ __all__ = [
     "frame_panels",
     "plot_error_curves",
     "plot_geodesic",
+    "euler_steps",
+    "gimbal_axes",
+    "double_cover",
+    "slerp_speed",
+    "angle_streams",
     "plot_rodrigues_circle",
 ]

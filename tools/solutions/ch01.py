@@ -14,7 +14,9 @@ answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]  # eqs 
     "angle_from_lengths": """\
 # 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
 x_dot_y = sp.Rational(9 + 16 - 13, 2)
-answer_angle_from_lengths = sp.acos(x_dot_y / (3 * 4))""",
+diagonals_dot = 9 - 16  # (x − y)ᵀ(x + y) = ‖x‖² − ‖y‖²
+sum_length = sp.sqrt(9 + 16 + 2 * x_dot_y)  # ‖x + y‖² = ‖x‖² + ‖y‖² + 2 xᵀy
+answer_angle_from_lengths = sp.acos(diagonals_dot / (sp.sqrt(13) * sum_length))""",
     "which_are_rigid": """\
 # g(p) = M p + d keeps distances iff M is orthogonal; it keeps cross products iff det M = +1
 half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])  # = diag(-1, -1, 1)
@@ -46,9 +48,12 @@ alpha_, beta_ = x.dot(z), -x.dot(y)
 assert sp.expand(lhs - (alpha_ * y + beta_ * z)) == sp.zeros(3, 1)
 answer_bac_cab = [alpha_, beta_]""",
     "motion_from_points": """\
-g0, g1, g2 = np.array([1, 2, 3]), np.array([1, 2, 4]), np.array([0, 2, 3])
-r1, r2 = g1 - g0, g2 - g0
-answer_motion_from_points = np.column_stack([r1, r2, np.cross(r1, r2)])""",
+a, b, c = np.array([3, 3, 0]), np.array([0, 3, 3]), np.array([3, 0, 3])
+ga, gb, gc = np.array([2, 6, 4]), np.array([2, 3, 7]), np.array([5, 3, 4])
+u, v, gu, gv = b - a, c - a, gb - ga, gc - ga  # g_*(u) = R u: d drops out
+F = np.column_stack([u, v, np.cross(u, v)])
+G = np.column_stack([gu, gv, np.cross(gu, gv)])  # condition 2: g_*(u × v) = gu × gv
+answer_motion_from_points = G @ np.linalg.inv(F)  # R F = G""",
 }
 
 MISTAKES = {
@@ -57,7 +62,12 @@ MISTAKES = {
         "no_origin": "[p @ e1, p @ e2, p @ e3]",
         "unnormalized": "[(p - o) @ v for v in directions]",
     },
-    "angle_from_lengths": {"cosine": "sp.Rational(1, 2)", "sign": "sp.acos(-sp.Rational(1, 2))"},
+    "angle_from_lengths": {
+        "cosine": "diagonals_dot / (sp.sqrt(13) * sum_length)",
+        "sign": "sp.acos(diagonals_dot / (sp.sqrt(13) * sp.sqrt(9 + 16 - 2 * x_dot_y)))",
+        "x_and_y": "sp.acos(x_dot_y / (3 * 4))",
+        "reversed": "sp.acos(-diagonals_dot / (sp.sqrt(13) * sum_length))",
+    },
     "which_are_rigid": {
         "mirrors": '{"a", "b", "c", "d", "e", "f"}',
         "translation": '{"b", "d"}',
@@ -68,7 +78,8 @@ MISTAKES = {
     "lagrange_identity": {"plus": "xx * yy + xy**2"},
     "bac_cab": {"swapped": "[beta_, alpha_]"},
     "motion_from_points": {
-        "mirror": "np.column_stack([r1, r2, -np.cross(r1, r2)])",
-        "points": "np.column_stack([g1, g2, np.cross(g1, g2)])",
+        "mirror": "np.column_stack([gu, gv, -np.cross(gu, gv)]) @ np.linalg.inv(F)",
+        "points": "np.column_stack([ga, gb, gc]) @ np.linalg.inv(np.column_stack([a, b, c]))",
+        "columns": "np.column_stack([gu, gv, np.cross(gu, gv)])",
     },
 }

@@ -66,6 +66,7 @@ MISTAKES = {
         "direction": "[sp.pi / 2, -2]",
         "larger": "[3 * sp.pi / 2, -2]",
         "next_turn": "[5 * sp.pi / 2, 2]",
+        "degrees": "[90, 2]",
     },
     "exp_general_axis": {"unit": "sp.eye(3) + sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2"},
     "spatial_angular_velocity": {"body": "[sp.cos(t), -sp.sin(t), 1]", "sum": "[1, 0, 1]"},

@@ -19,14 +19,13 @@ angle = sp.acos((0 - 1) / sp.Integer(2))  # tr R = 0: θ = 2π/3
 S = skew / (2 * sp.sin(angle))  # = ω̂
 answer_axis_of_rotation = sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])  # (2, 1, 2)/3""",
     "fixed_vs_body": """\
-c = np.cos(np.pi / 2)
-s = np.sin(np.pi / 2)
-Rx = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
-Ry = np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
-Rz = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+Rz = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])  # 90° about z
+Rx90 = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])  # 90° about x
+c, s = np.cos(np.pi / 3), np.sin(np.pi / 3)
+Rx60 = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])  # 60° about x
 R = Rz  # about the world z axis, from R = I
-R = R @ Ry  # about the body's own y axis: from the right
-R = Rx @ R  # about the world x axis: from the left
+R = R @ Rx90  # about the camera's own x axis: from the right
+R = Rx60 @ R  # about the world x axis: from the left
 answer_fixed_vs_body = R""",
     "composed_angle": """\
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(alpha), -sp.sin(alpha)], [0, sp.sin(alpha), sp.cos(alpha)]])
@@ -46,11 +45,19 @@ keep = lambda e: sum(
     c * alpha**i * beta**j for (i, j), c in sp.Poly(e, alpha, beta).terms() if i + j <= 2
 )
 answer_small_angle = vec.applyfunc(keep)  # (α, αβ/2, β)""",
-    "half_turn_axis": """\
-row = sp.Matrix([[23, -24, 36]]) / 49  # first row of R
-P_row = (row + sp.Matrix([[1, 0, 0]])) / 2  # first row of (R + I)/2 = ω₁ ωᵀ
-w1 = sp.sqrt(P_row[0])  # ω₁² = P₁₁, ω₁ > 0
-answer_half_turn_axis = (P_row / w1).T  # (6, −2, 3)/7""",
+    "two_half_turns": """\
+u = sp.Matrix([1, 2, 2]) / 3
+v = sp.Matrix([-2, 1, -2]) / 3
+H = lambda a: 2 * a * a.T - sp.eye(3)  # R(a, π) = I + 2â² = 2aaᵀ − I
+R = H(u) * H(v)
+n = u.cross(v)  # both half turns map the line of n onto itself (n → −n → n)
+# In the plane ⟂ n each half turn is a mirror in the line of its axis; two mirrors at angle α
+# make a turn by 2α. Here u·v = −4/9 (α > 90°), so the short way is θ = 2π − 2α:
+cos_t = (R.trace() - 1) / 2  # = 2(u·v)² − 1 = −49/81
+s = sp.Matrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]) / 2  # sin θ ω
+assert s.cross(n) == sp.zeros(3, 1)  # the axis lies along u × v
+angle = sp.acos(cos_t)  # in [0, π]: 2 acos(4/9)
+answer_two_half_turns = angle * s / s.norm()  # ω θ along +u × v""",
 }
 
 MISTAKES = {
@@ -61,8 +68,11 @@ MISTAKES = {
         "rows": "R_ab.T @ (R_bc.T @ v_c)",
     },
     "angle_from_trace": {"cosine": "(trace - 1) / 2", "no_minus_one": "sp.acos(trace / 2)"},
-    "axis_of_rotation": {"unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])"},
-    "fixed_vs_body": {"all_body": "Rz @ Ry @ Rx", "all_world": "Rx @ Ry @ Rz"},
+    "axis_of_rotation": {
+        "unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])",
+        "no_two": "2 * answer_axis_of_rotation",
+    },
+    "fixed_vs_body": {"all_body": "Rz @ Rx90 @ Rx60", "all_world": "Rx60 @ Rx90 @ Rz"},
     "composed_angle": {
         "no_minus_one": "(Rx * Rz).trace() / 2",
         "sum": "sp.cos(alpha + beta)",
@@ -72,8 +82,11 @@ MISTAKES = {
         "first_order": "sp.Matrix([alpha, 0, beta])",
         "sign": "sp.Matrix([alpha, -alpha * beta / 2, beta])",
     },
-    "half_turn_axis": {
-        "other_sign": "-answer_half_turn_axis",
-        "abs": "sp.Matrix([sp.Abs(e) for e in answer_half_turn_axis])",
+    "two_half_turns": {
+        "order": "-answer_two_half_turns",
+        "long_way": "(angle - 2 * sp.pi) * s / s.norm()",
+        "single_angle": "angle / 2 * s / s.norm()",
+        "unit_axis": "s / s.norm()",
+        "sum": "sp.pi * (u + v)",
     },
 }

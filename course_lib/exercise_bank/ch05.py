@@ -1,0 +1,180 @@
+r"""Exercises of chapter 5 (orientation in practice: Euler angles, gimbal lock, quaternions)."""
+
+from course_lib.exercises._model import Exercise, Value
+
+CHAPTER = 5
+SETUP = (
+    "import numpy as np\nimport sympy as sp\n\n"
+    "from course_lib import euler, quaternion, so3\n"
+    "from course_lib.exercises import check"
+)
+
+EXERCISES = [
+    Exercise(
+        name="quaternion_of_turn",
+        chapter=5,
+        number=1,
+        level="warm-up",
+        title="The quaternion of a turn",
+        statement=r"""
+Give the unit quaternion $q = (w, x, y, z)$, scalar first, of the turn by $90°$ about the axis
+through $(1, 2, 2)$ (a direction, not yet a unit vector), with $w > 0$. Give a 4-vector.
+""",
+        answer=Value(shape=(4,)),
+        tip="q = (cos θ/2, ω sin θ/2) with a unit axis ω and θ in radians.",
+        mistakes={
+            "full_angle": "a quaternion holds half the angle: cos θ/2 and sin θ/2, not θ.",
+            "not_unit": "the axis must be a unit vector first: divide (1, 2, 2) by its length.",
+            "scalar_last": "this course writes the scalar first, (w, x, y, z), not ROS's "
+            "(x, y, z, w).",
+            "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
+        },
+    ),
+    Exercise(
+        name="angle_from_ros",
+        chapter=5,
+        number=2,
+        level="warm-up",
+        title="The angle of a ROS orientation",
+        statement=r"""
+A ROS message holds the orientation `x: 0.0, y: 0.0, z: 0.6, w: 0.8` (scalar last). It is a
+turn about the $z$ axis. By what angle $\theta$, in radians, between $0$ and $\pi$? Give a
+number.
+""",
+        answer=Value(angle=True),
+        tip="w = cos θ/2 and z = sin θ/2 for a turn about z; atan2 gives the half angle.",
+        mistakes={
+            "scalar_first": "ROS writes the scalar last: w = 0.8 is the fourth number, "
+            "not the first.",
+            "half": "that is θ/2: a quaternion holds half the angle.",
+        },
+    ),
+    Exercise(
+        name="compose_quaternions",
+        chapter=5,
+        number=3,
+        level="core",
+        title="Two turns as one quaternion",
+        statement=r"""
+A body starts at the identity. It turns by $90°$ about the **world** $x$ axis, then by $90°$
+about the **world** $z$ axis. Give the unit quaternion $(w, x, y, z)$ of its final
+orientation, with $w > 0$. Give a 4-vector.
+""",
+        answer=Value(shape=(4,)),
+        tip="Quaternions compose like matrices: a turn about a fixed (world) axis multiplies "
+        "from the left.",
+        mistakes={
+            "order": "the second turn is about a world axis, so its quaternion multiplies "
+            "from the left.",
+            "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
+        },
+    ),
+    Exercise(
+        name="proper_euler_angles",
+        chapter=5,
+        number=4,
+        level="core",
+        title="Proper Euler angles of a rotation",
+        statement=r"""
+A camera mount reports its orientation as the rotation matrix
+$$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
+\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\
+-\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
+Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
+$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and $\alpha, \gamma \in
+[-\pi, \pi]$. Multiply out the product for general angles, read the angles off the entries (as
+the chapter did for roll, pitch and yaw in §2) and give the 3-vector $(\alpha, \beta, \gamma)$
+in radians.
+""",
+        answer=Value(shape=(3,), angle=True),
+        tip="Write out R_z(α) R_y(β) R_z(γ) first (sympy helps). Look for the row and the "
+        "column in which only two of the three angles appear, and use atan2 with both of "
+        "its arguments, so that the signs pick the quadrant.",
+        mistakes={
+            "reversed": "the order asked for is (α, β, γ), the order of the turns.",
+            "gamma_sign": "check the sign of the entry you use for cos γ: in the product it "
+            "comes with a minus sign.",
+            "negative_beta": "that triple rebuilds R too, but its β is negative; the "
+            "statement asks for β in [0, π].",
+        },
+    ),
+    Exercise(
+        name="unreachable_omega",
+        chapter=5,
+        number=5,
+        level="core",
+        title="The angular velocity that angle rates cannot give",
+        statement=r"""
+A drone's yaw, pitch and roll (intrinsic Z-Y-X, as in the chapter) are yaw $0$, pitch $90°$ and
+roll $30°$. Whatever rates $(\dot\psi, \dot\theta, \dot\phi)$ its angles change at, its
+angular velocity in body coordinates is $\omega_b = E\,(\dot\psi, \dot\theta, \dot\phi)^T$, and
+at this orientation these $\omega_b$ do not fill space. Give the unit vector $n$, in body
+coordinates, that is orthogonal to every $\omega_b$ the rates can produce; of the two such
+unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
+""",
+        answer=Value(shape=(3,)),
+        tip="Build E column by column at this orientation (each column is the axis of one turn "
+        "in body coordinates, §3). Which columns span the same line? A vector orthogonal to "
+        "two independent vectors comes from their cross product.",
+        mistakes={
+            "world_frame": "that vector is orthogonal to the turn axes written in world "
+            "coordinates; the exercise asks for body coordinates (each axis seen from the "
+            "body, through the transposes of the later turns).",
+            "no_transpose": "a later turn acts on an earlier turn's axis through its "
+            "transpose, R_x(φ)ᵀ, not R_x(φ): check the sign of the roll angle in your "
+            "columns.",
+            "parallel_columns": "the zero vector: two of the columns you crossed are "
+            "parallel at this pitch. Use two independent ones.",
+            "sign": "there are two unit normals; the statement picks the one with a positive "
+            "dot product with (1, 1, 1).",
+        },
+    ),
+    Exercise(
+        name="slerp_angular_velocity",
+        chapter=5,
+        number=6,
+        level="challenge",
+        title="How fast does slerp turn?",
+        statement=r"""
+A body moves from the orientation $q_0 = \big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)$
+to $q_1 = \big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},
+-\tfrac{\sqrt6}{4}\big)$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$ with the
+duration $T = 3$ s, taking the shorter way as the chapter's slerp does. Its angular velocity is
+constant. Give it in **world** coordinates, in rad/s: a 3-vector $\omega$ with
+$\dot R = \hat\omega R$.
+""",
+        answer=Value(shape=(3,)),
+        tip="slerp is chapter 4's geodesic (§7): one turn about a fixed axis at constant "
+        "speed. Which relative rotation is that turn, and in which frame is its axis "
+        "written? Then mind the time the move takes.",
+        mistakes={
+            "body_frame": "that is the angular velocity in body coordinates, the same vector "
+            "seen from the body; the exercise asks for world coordinates.",
+            "per_move": "that is the rotation vector of the whole move; the exercise asks "
+            "for a rate in rad/s: the move takes 3 s.",
+            "half_angle": "the quaternion of the relative turn holds half its angle: "
+            "cos(θ/2), not cos θ.",
+            "long_way": "that turns the long way round: q₀ · q₁ < 0, so −q₁ is the nearer "
+            "quaternion of the same orientation.",
+        },
+    ),
+    Exercise(
+        name="angle_between_quaternions",
+        chapter=5,
+        number=7,
+        level="challenge",
+        title="How far apart are two orientations?",
+        statement=r"""
+Two orientations are given by the unit quaternions $q_0 = (0.6, 0.8, 0, 0)$ and
+$q_1 = (-0.8, 0, 0, 0.6)$. Find the angle $\theta \in [0, \pi]$ of the rotation that takes the
+first to the second, $R_0^TR_1$, in radians. Give a number.
+""",
+        answer=Value(angle=True),
+        tip="The relative rotation is q₀* q₁, and its scalar part is q₀ · q₁ = cos θ/2 up to "
+        "a sign.",
+        mistakes={
+            "long_way": "q and −q are the same rotation: take the absolute value of q₀ · q₁ "
+            "to get the shorter angle.",
+        },
+    ),
+]

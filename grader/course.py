@@ -1,0 +1,191 @@
+"""``make course COURSE=DIR``: an nbgrader course directory for the problem sets.
+
+    python -m grader.course DIR
+
+writes
+
+- ``DIR/nbgrader_config.py``: the course's preprocessors (:mod:`grader.preprocessor`: the
+  confined kernel, the grader's verdict, the guard against malformed submissions), the folders
+  the kernel must not see, timeouts;
+- ``DIR/source/psNN/psNN_<slug>.ipynb`` for every problem set: the notebooks of
+  ``problem_sets/`` when the repository has them, otherwise the exercise section of each
+  chapter notebook (everything from its ``## Exercises`` heading, check cells as
+  ``tools/sync_exercises.py`` writes them today).
+
+Then the plain nbgrader commands are the instructor's whole workflow::
+
+    cd DIR
+    nbgrader generate_assignment ps01 --create
+    nbgrader autograde ps01                      # after collecting into submitted/<student>/
+    nbgrader generate_feedback ps01
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from pathlib import Path
+
+import nbformat
+
+ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+from tools import sync_exercises  # noqa: E402
+
+__all__ = ["problem_sets", "config_text", "write_course", "hidden_folders"]
+
+KERNELSPEC = {"name": "python3", "display_name": "Python 3 (ipykernel)", "language": "python"}
+TIMEOUT = 60
+RECORD = "record("  # what every check cell calls (course_lib.record)
+
+CONFIG = """\
+# The course's nbgrader configuration, written by `make course` (grader/course.py).
+# Points are decided outside the student's kernel: see docs/grading.md.
+import sys
+
+sys.path.insert(0, {repo!r})  # the instructor's grader/ and tools/solutions
+
+from nbconvert.preprocessors import ClearMetadataPreprocessor
+from nbgrader.preprocessors import (
+    AssignLatePenalties,
+    CheckCellMetadata,
+    ClearOutput,
+    DeduplicateIds,
+    IgnorePattern,
+    LimitOutput,
+    OverwriteCells,
+    OverwriteKernelspec,
+    SaveAutoGrades,
+)
+
+from grader.preprocessor import ConfinedExecute, GuardCells, VerifyRecords
+
+c = get_config()  # noqa: F821
+c.CourseDirectory.root = {root!r}
+c.CourseDirectory.course_id = "rotations"
+
+# A deleted, duplicated or retyped grade cell: put back with 0 points and a note.
+c.Autograde.sanitize_preprocessors = [
+    ClearOutput,
+    GuardCells,
+    DeduplicateIds,
+    OverwriteKernelspec,
+    OverwriteCells,
+    CheckCellMetadata,
+]
+# The submission runs in the confined kernel; the grader then re-checks every recorded answer.
+c.Autograde.autograde_preprocessors = [
+    ConfinedExecute,
+    VerifyRecords,
+    IgnorePattern,
+    ClearMetadataPreprocessor,
+    LimitOutput,
+    SaveAutoGrades,
+    AssignLatePenalties,
+    CheckCellMetadata,
+]
+c.Execute.timeout = {timeout}  # seconds per cell
+c.ConfinedKernelManager.hide = {hide!r}
+c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on one whole line
+"""
+
+
+def problem_sets(root=ROOT):
+    """``{(assignment, file name): notebook}`` of every problem set, in order."""
+    out = {}
+    folder = root / "problem_sets"
+    made = sorted(folder.glob("ps[0-9][0-9]_*.ipynb")) if folder.is_dir() else []
+    for path in made:
+        nb = nbformat.read(path, as_version=4)
+        out[(path.name[:4], path.name)] = nb
+    if out:
+        return {k: _clean(nb) for k, nb in out.items()}
+    for path in sorted((root / "notebooks").glob("[0-9][0-9]_*.ipynb")):
+        chapter = sync_exercises.chapter_of(path)
+        nb = sync_exercises.sync(nbformat.read(path, as_version=4), chapter)
+        start = next(
+            i
+            for i, c in enumerate(nb.cells)
+            if c.cell_type == "markdown" and c.source.lstrip().startswith(sync_exercises.HEADING)
+        )
+        ps = nbformat.v4.new_notebook(cells=nb.cells[start:])
+        out[(f"ps{chapter:02d}", f"ps{path.name}")] = _clean(ps)
+    return out
+
+
+def _clean(nb):
+    nb.metadata = {"kernelspec": dict(KERNELSPEC), "language_info": {"name": "python"}}
+    for cell in nb.cells:
+        if cell.cell_type == "code":
+            cell.outputs, cell.execution_count = [], None
+    return nb
+
+
+def hidden_folders(course, root=ROOT):
+    """What the confined kernel must not see: the course directory, this repository, and the
+    project folder of the Python environment or of ``course_lib`` when it holds solutions."""
+    import course_lib
+
+    out = [Path(course).resolve(), root.resolve()]
+    for candidate in (Path(sys.prefix).parent, Path(course_lib.__file__).resolve().parents[1]):
+        if (candidate / "tools" / "solutions").is_dir():
+            out.append(candidate.resolve())
+    return sorted({str(p) for p in out})
+
+
+def config_text(course, root=ROOT, timeout=TIMEOUT):
+    """The text of ``nbgrader_config.py`` for the course directory ``course``."""
+    course = Path(course).resolve()
+    return CONFIG.format(
+        repo=str(root.resolve()),
+        root=str(course),
+        timeout=int(timeout),
+        hide=hidden_folders(course, root),
+    )
+
+
+def write_course(course, root=ROOT):
+    """Write the course directory; returns the assignment names."""
+    course = Path(course).resolve()
+    if course == root.resolve() or root.resolve() in course.parents:
+        raise ValueError(f"COURSE must be outside the repository, got {course}")
+    course.mkdir(parents=True, exist_ok=True)
+    (course / "nbgrader_config.py").write_text(config_text(course, root))
+    names, sets = [], problem_sets(root)
+    for (_, filename), nb in sets.items():
+        stale = [
+            c.id for c in nb.cells if c.get("id", "").endswith("-check") and RECORD not in c.source
+        ]
+        if stale:
+            raise ValueError(
+                f"{filename}: the check cells {', '.join(stale[:3])}... record no answer for the "
+                "grader (an older check cell): regenerate the problem sets (make exercises)"
+            )
+    for (assignment, filename), nb in sets.items():
+        folder = course / "source" / assignment
+        folder.mkdir(parents=True, exist_ok=True)
+        nbformat.write(nb, folder / filename)
+        names.append(assignment)
+    return names
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("course", metavar="DIR", help="the course directory to write")
+    args = parser.parse_args(argv)
+    if not re.fullmatch(r"[^\0]+", args.course):
+        parser.error("DIR must be a folder name")
+    try:
+        names = write_course(Path(args.course))
+    except (OSError, ValueError) as err:
+        print(f"make course: {err}", file=sys.stderr)
+        return 2
+    print(f"{args.course}: nbgrader_config.py and source/ for {', '.join(names)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

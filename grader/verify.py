@@ -1,0 +1,260 @@
+r"""The grader's verdict on a recorded answer, decided in the instructor's process.
+
+The expected answers are the instructor's reference solutions, ``tools/solutions/chNN.py``,
+run here (after the chapter's set-up code) and never shipped. A recorded answer
+(:mod:`course_lib.record`) is read with the whitelist of :mod:`grader.records`, then read again
+by the grader's own import of ``course_lib`` (exact types, bounded sizes), and compared:
+
+- **choice**: the set of letters;
+- **numbers**: every entry within :math:`4\,\mathrm{TOL}\max(1, \lVert E\rVert)` of the
+  reference (the student's check accepts within TOL, refuses beyond 4 TOL);
+- **symbolic**: exactly, when the package's exact normal form of both fits its bounds (the
+  expanded form, reduced modulo :math:`\lVert\omega\rVert = 1` where ω is a unit vector), and
+  otherwise at :data:`ROUNDS` × 40 *fresh* random points drawn now from the operating
+  system's entropy over the whole domain, within TOL. Fresh points defeat an answer fitted to
+  the package's seeded points. The form the exercise asks for is checked with
+  ``course_lib``'s own form check.
+
+The verdict is ``"correct"`` or another status with a one-line note for the instructor.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import signal
+import threading
+from contextlib import contextmanager
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+import numpy as np
+import sympy as sp
+
+from course_lib import exercise_bank
+from course_lib import symbolic as S
+from course_lib.exercises import EXERCISES, Choice, Value
+from course_lib.exercises import _engine as E
+from course_lib.exercises._check import form_violation
+from course_lib.exercises._reading import Rejected, read_answer, read_choice
+from course_lib.tolerance import TOL
+
+from .records import Unreadable, parse
+
+__all__ = ["Verdict", "verdict", "expected", "fresh_points", "SOLUTIONS"]
+
+ROOT = Path(__file__).resolve().parents[1]
+SOLUTIONS = ROOT / "tools" / "solutions"
+ROUNDS = 2
+NPOINTS = 40  # points per round, drawn afresh at grading time
+SECONDS = 20  # one verdict at most (the reading bounds keep it far below)
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """``status`` (``"correct"`` or why not) and a one-line ``note``."""
+
+    status: str
+    note: str
+
+    @property
+    def ok(self):
+        return self.status == "correct"
+
+
+@cache
+def _solution_code(chapter):
+    path = SOLUTIONS / f"{exercise_bank.CHAPTERS[chapter]}.py"
+    spec = importlib.util.spec_from_file_location(f"_grader_solutions_{chapter}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.SOLUTIONS
+
+
+def _readable(spec):
+    return set(spec.allowed or ()) | set(spec.domain) | set(E.base_symbols(spec))
+
+
+@cache
+def expected(name):
+    """The reference answer of exercise ``name`` as the checker reads it: the sorted letters
+    of a choice, or ``(form, M)``."""
+    ex = EXERCISES[name]
+    ns = {}
+    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)  # the instructor's own code
+    exec(_solution_code(ex.chapter)[name], ns)
+    return _read(ex, ns[ex.answer_variable])
+
+
+def _read(ex, obj):
+    spec = ex.answer
+    if isinstance(spec, Choice):
+        return read_choice(obj, spec.letters)
+    if isinstance(spec, Value):
+        return read_answer(obj, spec.shape, set(), numeric=True)
+    return read_answer(obj, spec.shape, _readable(spec))
+
+
+def fresh_points(spec, rng):
+    """Values of the base symbols of ``spec`` at 40 random points drawn from ``rng``, over the
+    same domain as the checker's seeded points."""
+    n = NPOINTS
+    out = {}
+    for vec in (S.omega, S.x, S.y, S.z, E.MATRIX_DEFINITIONS[S.d]):
+        v = rng.normal(size=(n, 3))
+        if vec == S.omega:
+            v /= np.linalg.norm(v, axis=1, keepdims=True)
+            if not spec.unit_omega:
+                v *= rng.uniform(0.3, 2.0, size=(n, 1))
+        out.update({s: v[:, i] for i, s in enumerate(vec)})
+    for mat in (S.A, S.B, S.R):
+        q = rng.normal(size=(n, 4))
+        rots = _rotations(q / np.linalg.norm(q, axis=1, keepdims=True))
+        for (i, j), s in np.ndenumerate(np.array(E.MATRIX_DEFINITIONS[mat], dtype=object)):
+            out[s] = rots[:, i, j]
+    turn = 4 * np.pi
+    ranges = {S.theta: turn, S.alpha: turn, S.beta: turn, S.phi: turn, S.t: 4.0, S.a: 1.5}
+    for s, half in ranges.items():
+        out[s] = rng.uniform(-half, half, n)
+    out[S.x_0] = rng.uniform(0.5, 2.0, n) * rng.choice([-1.0, 1.0], n)
+    wanted = set(E.base_symbols(spec))
+    return {s: v for s, v in out.items() if s in wanted}
+
+
+def _rotations(q):
+    w, x, y, z = q.T
+    rows = [
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+    ]
+    return np.stack([np.stack(r, -1) for r in rows], -2)
+
+
+def _explicit(form, M):
+    """An explicit matrix of the answer (matrix symbols written out), or None when too big."""
+    if form == "explicit":
+        return M
+    try:
+        out = sp.ImmutableMatrix(M.xreplace(E.MATRIX_DEFINITIONS).doit())
+    except Exception:  # noqa: BLE001 - too big or not explicit: the numeric check decides
+        return None
+    return out if out.shape == M.shape else None
+
+
+def _exactly_equal(spec, a, b):
+    """Whether the explicit answers ``a`` and ``b`` expand to the same thing (modulo ‖ω‖ = 1
+    where the exercise says so). False means "not shown equal", never "different"."""
+    try:
+        diff = sp.Matrix(a - b) if isinstance(a, sp.MatrixBase) else sp.Matrix([a - b])
+        reduce = S.unit_reduce if spec.unit_omega else (lambda e: e)
+        return all(reduce(sp.expand(e)) == 0 for e in diff)
+    except Exception:  # noqa: BLE001 - too big or not comparable: the numeric check decides
+        return False
+
+
+def _close(va, vb):
+    """Equal at every point within TOL, scaled by the size of the values (the checker's rule)."""
+    scale = np.maximum(1.0, np.abs(vb))
+    return bool(np.all(np.abs(va - vb) <= TOL * scale))
+
+
+def _same_symbolic(ex, got, want):
+    spec = ex.answer
+    a, b = _explicit(*got), _explicit(*want)
+    if a is not None and b is not None and _exactly_equal(spec, a, b):
+        return True
+    rng = np.random.default_rng()  # fresh entropy from the operating system
+    syms = E.base_symbols(spec)
+    for _ in range(ROUNDS):
+        pts = fresh_points(spec, rng)
+        va = E.values(got[0], got[1], syms, pts).reshape(NPOINTS, -1)
+        vb = E.values(want[0], want[1], syms, pts).reshape(NPOINTS, -1)
+        if not _close(va, vb):
+            return False
+    return True
+
+
+def _numbers(M):
+    with np.errstate(all="ignore"):
+        vals = np.array(E.numeric_function((), M)(), dtype=complex).ravel()
+    if not np.all(np.isfinite(vals)) or np.max(np.abs(vals.imag), initial=0.0) > TOL:
+        raise Rejected("not a finite real number")
+    return vals.real
+
+
+def _same_numbers(got, want):
+    a, b = _numbers(got[1]), _numbers(want[1])
+    return a.shape == b.shape and np.linalg.norm(a - b) <= 4 * TOL * max(1.0, np.linalg.norm(b))
+
+
+def _judge(ex, data):
+    kind = data.get("kind")
+    if kind == "none":
+        return Verdict("no answer", "no answer recorded")
+    if kind == "unreadable":
+        return Verdict("malformed", "the answer could not be read (the check cell says why)")
+    if kind not in ("choice", "explicit", "matrix"):
+        return Verdict("forged", "a record of an unknown kind")
+    if kind == "choice":
+        got = read_choice(data.get("answer"), ex.answer.letters)
+        same = got == expected(ex.name)
+        return Verdict("correct", "correct") if same else Verdict("wrong", "wrong answer")
+    got = _read(ex, parse(data.get("answer")))
+    want = expected(ex.name)
+    if isinstance(ex.answer, Value):
+        same = _same_numbers(got, want)
+        return Verdict("correct", "correct") if same else Verdict("wrong", "wrong answer")
+    if not _same_symbolic(ex, got, want):
+        return Verdict("wrong", "wrong answer (compared at fresh random points)")
+    violation = form_violation(ex.answer, *got)
+    if violation:
+        return Verdict("form", f"right value, not in the asked form: {violation}")
+    return Verdict("correct", "correct")
+
+
+class _TimeUp(Exception):
+    pass
+
+
+@contextmanager
+def _deadline(seconds):
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def _raise(signum, frame):
+        raise _TimeUp
+
+    old = signal.signal(signal.SIGALRM, _raise)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def verdict(name, data):
+    """The grader's :class:`Verdict` on the record ``data`` (a dict) of exercise ``name``.
+
+    A record of another exercise, of an unknown layout, or that the whitelist refuses is not
+    correct; nothing of the record is ever evaluated as code.
+    """
+    if name not in EXERCISES:
+        return Verdict("unknown", f"no exercise called {name!r}")
+    if type(data) is not dict or data.get("version") != 1:
+        return Verdict("forged", "a record of an unknown layout")
+    if data.get("exercise") != name:
+        return Verdict("forged", "the record is of another exercise")
+    try:
+        with _deadline(SECONDS), np.errstate(all="ignore"):
+            return _judge(EXERCISES[name], data)
+    except Unreadable as err:
+        return Verdict("forged", str(err))
+    except Rejected as err:
+        return Verdict("malformed", f"refused on reading: {err}")
+    except _TimeUp:
+        return Verdict("malformed", f"no verdict within {SECONDS} s")
+    except Exception as err:  # noqa: BLE001 - never stop the class for one record
+        return Verdict("malformed", f"could not be checked ({type(err).__name__})")

@@ -1,0 +1,66 @@
+"""Each chapter keeps what is on screen within issue 18's targets (tools/chapter_counts.py).
+
+What "on screen" means is tested on small notebooks: a heading with
+``"jp-MarkdownHeadingCollapsed": true`` folds every cell up to the next heading of the same or a
+higher level; a code cell whose input is hidden shows no code lines.
+"""
+
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+import chapter_counts as cc  # noqa: E402
+
+CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_chapter_is_within_its_targets(path):
+    counts = cc.count(path)
+    assert counts.over() == {}, cc.report(counts)
+
+
+def test_the_notes_chapters_have_their_own_word_limits_and_the_others_3500():
+    limits = {p.name[:2]: cc.count(p).limits()["words"] for p in CHAPTERS}
+    assert (limits["01"], limits["02"], limits["03"]) == (2360, 6200, 3660)
+    assert all(v == 3500 for k, v in limits.items() if int(k) > 3)
+
+
+def _notebook(tmp_path, cells):
+    nb = nbformat.v4.new_notebook(cells=cells)
+    path = tmp_path / "09_test.ipynb"
+    nbformat.write(nb, path)
+    return path
+
+
+def test_a_folded_heading_hides_its_cells_up_to_the_next_heading_of_its_level(tmp_path):
+    fold = nbformat.v4.new_markdown_cell("### Going deeper: more\n\nfour words here now")
+    fold.metadata["jp-MarkdownHeadingCollapsed"] = True
+    hidden_code = nbformat.v4.new_code_cell("x = 1\ny = 2")
+    hidden_code.metadata["jupyter"] = {"source_hidden": True}
+    cells = [
+        nbformat.v4.new_markdown_cell("## Section\n\none two"),
+        fold,
+        nbformat.v4.new_markdown_cell("#### Deeper still inside the fold"),
+        nbformat.v4.new_code_cell("a = 1\nb = 2\nc = 3"),
+        nbformat.v4.new_markdown_cell("### Next part\n\nthree"),
+        nbformat.v4.new_code_cell("print(1)"),
+        hidden_code,
+    ]
+    counts = cc.count(_notebook(tmp_path, cells))
+    # on screen: "## Section one two" (4), the fold's own cell (8), "### Next part three" (4)
+    assert (counts.words, counts.code_lines, counts.folded_cells) == (16, 1, 2)
+
+
+def test_long_outputs_and_notes_on_the_notes_are_counted(tmp_path):
+    long = nbformat.v4.new_code_cell("print('\\n'.join(map(str, range(25))))")
+    long.outputs = [nbformat.v4.new_output("stream", name="stdout", text="\n".join("x" * 25))]
+    note = nbformat.v4.new_markdown_cell("**Note on the notes:** a slip.")
+    again = nbformat.v4.new_markdown_cell(note.source)
+    counts = cc.count(_notebook(tmp_path, [long, note, again]))
+    assert counts.longest_output == 25 and counts.notes_on_notes == 2
+    assert set(counts.over()) == {"longest_output"}

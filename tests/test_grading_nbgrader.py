@@ -1,0 +1,240 @@
+"""A class graded by real nbgrader 0.9.6 in a `make course` directory, attacked as students do.
+
+Each student of the class hands in problem set 2 (the release copy, or the instructor's
+solved copy) with one attack in it. The attacks are those of issue 17: they all got full marks
+when the points were decided in the student's kernel. Now every attack scores 0, nothing of the
+instructor's (source/, solutions, gradebook) is read or written, the instructor's copy gets
+full marks, a blank copy 0, and a malformed submission is graded around (0 for the broken grade
+cells, with a note) without stopping the class.
+
+One attack of each kind runs in `make test` (:func:`test_fast_class`, about a minute); the rest
+are marked ``slow_grading`` (``pytest -m slow_grading tests/test_grading_nbgrader.py``, about
+two minutes more).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from course_lib.exercises import exercises  # noqa: E402
+from grader.course import write_course  # noqa: E402
+
+pytestmark = pytest.mark.notebook_exec
+NBGRADER = Path(sys.executable).with_name("nbgrader")
+PS = "ps02"
+CHAPTER = 2
+TOTAL = sum(ex.points for ex in exercises(CHAPTER))
+
+REDEFINE_CHECK = """\
+class _Pass:
+    ok, status, message = True, "correct", "correct."
+def check(name, answer):
+    return _Pass()
+"""
+SET_JUDGE = """\
+import course_lib.exercises as _ce
+_ce.judge = lambda ex, fp, answer: ("correct", "correct.")
+"""
+INPUT_TRANSFORMER = """\
+def _strip(lines):
+    return [l for l in lines if not l.lstrip().startswith(("assert", "record("))]
+get_ipython().input_transformers_post.append(_strip)
+"""
+AST_TRANSFORMER = """\
+import ast
+class _Drop(ast.NodeTransformer):
+    def visit_Assert(self, node):
+        return None
+    def visit_Expr(self, node):
+        return None
+get_ipython().ast_transformers.append(_Drop())
+"""
+FORGED_RECORD = """\
+import course_lib.record as _r
+from IPython.display import display
+def _forged(name, answer, result):
+    display({_r.MIME: {"version": 1, "exercise": name, "kind": "explicit",
+             "answer": "__import__('os').system('touch /tmp/forged')"}}, raw=True)
+_r.record = _forged
+import sys
+sys.modules["course_lib.record"] = _r
+"""
+FOLDER = {
+    "course_lib/__init__.py": "",
+    "course_lib/exercises.py": (
+        "import sympy\n"
+        "class _Pass:\n    ok, status, message = True, 'correct', 'correct.'\n"
+        "def check(name, answer):\n    return _Pass()\n"
+        "def __getattr__(name):\n    return sympy.Symbol(name)\n"
+    ),
+    "course_lib/record.py": "def record(name, answer, result):\n    pass\n",
+}
+
+
+def _snoop(course):
+    return f"""\
+import glob, os
+seen = glob.glob({str(course)!r} + "/**", recursive=True)
+for p in seen + glob.glob({str(ROOT)!r} + "/tools/**"):
+    if os.path.isfile(p):
+        print("SEEN", p)
+        print(open(p, errors="replace").read()[:20000])
+for target in ({str(course / "gradebook.db")!r}, {str(course / "source" / PS / "x.txt")!r}):
+    try:
+        with open(target, "a") as f:
+            f.write("pwned")
+        print("WROTE", target)
+    except OSError as err:
+        print("REFUSED", type(err).__name__)
+"""
+
+
+def run(args, cwd):
+    env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ.get('PATH', '')}"}
+    proc = subprocess.run(
+        [str(NBGRADER), *args], cwd=cwd, capture_output=True, text=True, timeout=900, env=env
+    )
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+def _digest(folder):
+    h = hashlib.sha256()
+    for p in sorted(Path(folder).rglob("*")):
+        if p.is_file():
+            h.update(str(p).encode() + p.read_bytes())
+    return h.hexdigest()
+
+
+@pytest.fixture(scope="module")
+def course(tmp_path_factory):
+    if shutil.which("bwrap") is None:
+        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
+    root = tmp_path_factory.mktemp("course")
+    write_course(root)
+    code, out = run(["generate_assignment", PS, "--create"], root)
+    assert code == 0, out
+    return root
+
+
+def _notebook(course, kind):
+    folder = course / ("source" if kind == "solved" else "release") / PS
+    path = next(folder.glob("*.ipynb"))
+    return path.name, nbformat.read(path, as_version=4)
+
+
+def submit(course, student, kind="blank", prefix="", files=None, edit=None):
+    """Hand in the blank (release) or solved (source) copy with an attack in it."""
+    name, nb = _notebook(course, kind)
+    if prefix:
+        first = next(c for c in nb.cells if c.id.endswith("-answer"))
+        first.source = prefix + "\n" + first.source
+    if edit:
+        edit(nb)
+    dest = course / "submitted" / student / PS
+    dest.mkdir(parents=True)
+    nbformat.write(nb, dest / name)
+    (dest / "timestamp.txt").write_text("2026-01-01 00:00:00.000000 UTC")
+    for rel, text in (files or {}).items():
+        (dest / rel).parent.mkdir(parents=True, exist_ok=True)
+        (dest / rel).write_text(text)
+
+
+def scores(course):
+    from nbgrader.api import Gradebook
+
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        return {s.student.id: (s.score, s.max_score) for s in gb.find_assignment(PS).submissions}
+
+
+def autograded(course, student):
+    path = next((course / "autograded" / student / PS).glob("*.ipynb"))
+    return nbformat.read(path, as_version=4)
+
+
+def _malform(nb):
+    checks = [i for i, c in enumerate(nb.cells) if c.id.endswith("-check")]
+    dup = nbformat.from_dict(json.loads(json.dumps(nb.cells[checks[0]])))
+    dup.id = "a-copy"
+    nb.cells[checks[2]].cell_type = "markdown"  # retyped
+    nb.cells[checks[2]].pop("outputs", None)
+    nb.cells[checks[2]].pop("execution_count", None)
+    del nb.cells[checks[1]]  # deleted
+    nb.cells.insert(checks[0] + 1, dup)  # duplicated
+
+
+def _points_of_cells(nb, ids):
+    return sum(c.metadata["nbgrader"]["points"] for c in nb.cells if c.id in ids)
+
+
+def test_fast_class(course):
+    """The instructor's copy, a blank one, one attack of each kind and a malformed copy."""
+    before = {p: _digest(course / p) for p in ("source", "release")}
+    db = (course / "gradebook.db").read_bytes()
+    submit(course, "a_instructor", "solved")
+    submit(course, "b_blank")
+    submit(course, "c_redefine_check", prefix=REDEFINE_CHECK)
+    submit(course, "d_course_lib_folder", files=FOLDER)
+    submit(course, "e_snoop", prefix=_snoop(course))
+    submit(course, "f_malformed", "solved", edit=_malform)
+    submit(course, "g_instructor_after", "solved")
+    code, out = run(["autograde", PS, "--create"], course)
+    assert code == 0, out
+    got = scores(course)
+    assert got["a_instructor"] == got["g_instructor_after"] == (TOTAL, TOTAL)
+    for student in ("b_blank", "c_redefine_check", "d_course_lib_folder", "e_snoop"):
+        assert got[student] == (0, TOTAL), (student, got)
+    # the malformed copy: 0 for the three broken grade cells, full marks for the rest
+    _, solved = _notebook(course, "solved")
+    checks = [c.id for c in solved.cells if c.id.endswith("-check")]
+    assert got["f_malformed"] == (TOTAL - _points_of_cells(solved, checks[:3]), TOTAL)
+    notes = [
+        o.evalue
+        for c in autograded(course, "f_malformed").cells
+        for o in c.get("outputs", [])
+        if o.output_type == "error"
+    ]
+    assert any("duplicated" in n for n in notes) and any("deleted" in n for n in notes), notes
+    assert any("another type" in n for n in notes), notes
+    # nothing of the instructor's was read or written
+    snoop = json.dumps([c.get("outputs", []) for c in autograded(course, "e_snoop").cells])
+    assert "BEGIN SOLUTION" not in snoop and "SOLUTIONS" not in snoop
+    assert "SEEN" not in snoop and "WROTE" not in snoop and "REFUSED" in snoop
+    assert {p: _digest(course / p) for p in ("source", "release")} == before
+    assert (course / "gradebook.db").read_bytes() != db  # graded, but by nbgrader only
+    assert not (course / "source" / PS / "x.txt").exists()
+    # no check cell output reads as a score
+    for cell in autograded(course, "a_instructor").cells:
+        if cell.id.endswith("-check"):
+            kinds = {o.output_type for o in cell.outputs}
+            assert kinds == {"display_data"}, cell.outputs
+
+
+@pytest.mark.slow_grading
+def test_slow_attacks(course):
+    """The other in-kernel attacks of issue 17: every one scores 0."""
+    attacks = {
+        "s_set_judge": SET_JUDGE,
+        "s_input_transformer": INPUT_TRANSFORMER,
+        "s_ast_transformer": AST_TRANSFORMER,
+        "s_forged_record": FORGED_RECORD,
+    }
+    for student, prefix in attacks.items():
+        submit(course, student, prefix=prefix)
+    submit(course, "s_folder_solved_names", files=FOLDER, prefix=REDEFINE_CHECK)
+    code, out = run(["autograde", PS, "--create"], course)
+    assert code == 0, out
+    got = scores(course)
+    for student in (*attacks, "s_folder_solved_names"):
+        assert got[student] == (0, TOTAL), (student, got)
+    assert not Path("/tmp/forged").exists()

@@ -1,0 +1,223 @@
+"""The grader's side, without nbgrader: records read with a whitelist, verdicts against the
+instructor's solutions at fresh random points (grader/records.py, grader/verify.py), the
+record a check cell leaves (course_lib/record.py) and the confined kernel's command."""
+
+from __future__ import annotations
+
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+from course_lib import exercise_bank  # noqa: E402
+from course_lib.exercises import EXERCISES, alpha, check  # noqa: E402
+from course_lib.exercises import _engine as E  # noqa: E402
+from course_lib.record import MIME, CheckFailed, answer_record  # noqa: E402
+from grader import records, sandbox, verify  # noqa: E402
+from grader.records import Unreadable, parse  # noqa: E402
+from tools.exercise_fingerprints import solutions  # noqa: E402
+
+NAMES = list(EXERCISES)
+
+
+def _namespace(name):
+    ex = EXERCISES[name]
+    sols, _ = solutions(ex.chapter)
+    ns = {}
+    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
+    exec(sols[name], ns)
+    return ns
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_the_reference_solution_is_correct_and_every_known_mistake_is_not(name):
+    ns = _namespace(name)
+    ex = EXERCISES[name]
+    assert verify.verdict(name, answer_record(name, ns[ex.answer_variable])).ok
+    _, mistakes = solutions(ex.chapter)
+    for mid, expr in mistakes.get(name, {}).items():
+        got = verify.verdict(name, answer_record(name, eval(expr, ns)))
+        assert not got.ok, (mid, got)
+
+
+def test_an_answer_fitted_to_the_checkers_seeded_points_is_wrong_at_fresh_points():
+    """composed_angle = cos of a composed angle in α and β, replaced by a trigonometric
+    polynomial in α alone through its values at the checker's 40 seeded points."""
+    name = "composed_angle"
+    spec = EXERCISES[name].answer
+    pts, _ = E.points(name, spec)
+    ref = _namespace(name)["answer_" + name]
+    f = sp.lambdify(sorted(ref.free_symbols, key=str), ref)
+    target = f(pts[alpha], pts[E.base_symbols(spec)[1]])
+    a = pts[alpha]
+    cols = [np.ones_like(a)] + [g(n * a) for n in range(1, 20) for g in (np.cos, np.sin)]
+    cols.append(np.cos(20 * a))
+    coef = np.linalg.lstsq(np.stack(cols, -1), target, rcond=None)[0]
+    terms = [sp.Float(coef[0])]
+    k = 1
+    for n in range(1, 20):
+        terms += [sp.Float(coef[k]) * sp.cos(n * alpha), sp.Float(coef[k + 1]) * sp.sin(n * alpha)]
+        k += 2
+    fitted = sp.Add(*terms, sp.Float(coef[-1]) * sp.cos(20 * alpha))
+    got = verify.verdict(name, answer_record(name, fitted))
+    assert got.status == "wrong" and "fresh random points" in got.note
+
+
+def test_fresh_points_are_new_on_every_draw_and_not_the_checkers():
+    spec = EXERCISES["hat_fifth"].answer
+    rng = np.random.default_rng()
+    one, two = verify.fresh_points(spec, rng), verify.fresh_points(spec, rng)
+    seeded, _ = E.points("hat_fifth", spec)
+    assert set(one) == set(seeded)
+    for s in one:
+        n = min(len(one[s]), len(seeded[s]))
+        assert not np.allclose(one[s], two[s]) and not np.allclose(one[s][:n], seeded[s][:n])
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "__import__('os').system('true')",
+        "Symbol('x').__class__",
+        "(lambda: 1)()",
+        "Integer(10**40)",
+        "Integer(" + "9" * 40 + ")",
+        "Pow(Integer(2), Integer(100000000000000000000000000000))",
+        "Float('nan')",
+        "Float('1e400')",
+        "Symbol('x', evil=True)",
+        "Symbol('x', **{'real': True})",
+        "eval('1')",
+        "Add(" * 300 + "Integer(1)" + ")" * 300,
+        "[" * 300 + "]" * 300,
+        "Integer(1) + Integer(2)",
+        "x" * 300_000,
+        "Rational(1, 0)",
+    ],
+)
+def test_forged_record_text_is_refused_within_a_second_without_evaluating_it(text):
+    start = time.perf_counter()
+    with pytest.raises(Unreadable, match="^record: "):
+        parse(text)
+    assert time.perf_counter() - start < 1.0
+
+
+def test_parse_reads_back_what_srepr_writes():
+    from course_lib.exercises import W, omega, theta
+
+    for obj in (
+        sp.sin(theta) * W + (1 - sp.cos(theta)) * W**2,
+        sp.ImmutableMatrix([[sp.pi / 3, sp.Rational(-1, 2)], [sp.Float(0.25), sp.E]]),
+        omega.dot(omega) ** 2 * sp.Identity(3) - W.T,
+    ):
+        assert sp.srepr(parse(sp.srepr(obj))) == sp.srepr(obj)
+    assert set(records.CONSTRUCTORS) >= {"Add", "Mul", "Pow", "MatMul", "ImmutableDenseMatrix"}
+
+
+@pytest.mark.parametrize(
+    ("data", "status"),
+    [
+        ({"version": 1, "exercise": "hat_fifth", "kind": "none", "answer": None}, "no answer"),
+        ({"version": 1, "exercise": "hat_cubed", "kind": "matrix", "answer": "W"}, "forged"),
+        ({"exercise": "hat_fifth", "kind": "matrix", "answer": "Integer(1)"}, "forged"),
+        ({"version": 1, "exercise": "hat_fifth", "kind": "pickle", "answer": "x"}, "forged"),
+        ({"version": 1, "exercise": "hat_fifth", "kind": "unreadable"}, "malformed"),
+        (
+            {"version": 1, "exercise": "hat_fifth", "kind": "explicit", "answer": "Symbol('q')"},
+            "malformed",
+        ),
+        ([1, 2], "forged"),
+    ],
+)
+def test_a_record_that_is_missing_forged_or_of_another_exercise_is_not_correct(data, status):
+    got = verify.verdict("hat_fifth", data)
+    assert got.status == status and not got.ok and "\n" not in got.note
+
+
+def test_the_asked_form_is_checked_by_the_grader_too():
+    from course_lib.exercises import W
+
+    right_value_wrong_form = W**5  # hat_fifth asks for degree at most 2 in W
+    got = verify.verdict("hat_fifth", answer_record("hat_fifth", right_value_wrong_form))
+    assert got.status == "form" and "reduce the higher powers" in got.note
+    assert check("hat_fifth", right_value_wrong_form).status == "form"
+
+
+def test_the_record_holds_only_the_students_answer_and_a_failed_check_is_one_line():
+    rec = answer_record("angle_from_lengths", 1.0)
+    assert rec["kind"] == "explicit"
+    assert rec["answer"] == "ImmutableDenseMatrix([[Float('1.0', precision=53)]])"
+    assert answer_record("which_in_so3", None)["kind"] == "none"
+    assert answer_record("which_in_so3", {"b", "a"})["answer"] == "ab"
+    assert answer_record("hat_fifth", object())["kind"] == "unreadable"
+    assert MIME.startswith("application/vnd.") and MIME.endswith("+json")
+    err = CheckFailed("✗ hat_fifth: a hint that is long " + "and whole " * 30)
+    lines = err._render_traceback_()
+    assert len(lines) == 1 and lines[0].endswith("and whole ") and isinstance(err, AssertionError)
+
+
+def test_the_confined_kernel_command_hides_the_instructors_folders_and_drops_privileges():
+    cmd = sandbox.bwrap_command(["/course", "/repo"], ["/repo/course_lib"], 7, ["--x"])
+    text = " ".join(cmd)
+    assert "--ro-bind / /" in text and "--tmpfs /course" in text and "--remount-ro /course" in text
+    assert "--ro-bind /repo/course_lib /repo/course_lib" in text
+    for flag in ("--die-with-parent", "--unshare-pid", "--cap-drop ALL", "--chdir /tmp/work"):
+        assert flag in text
+    assert cmd.index("--tmpfs") < cmd.index("--remount-ro")
+    python = cmd.index("--") + 1
+    assert cmd[python + 1] == "-P" and "import course_lib" in cmd[python + 3]
+    assert cmd[-1] == "--x"
+
+
+def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_check_cells(
+    tmp_path,
+):
+    from grader import course
+
+    names = course.write_course(tmp_path / "c")
+    assert names == [p.name[:4] for p in sorted((ROOT / "problem_sets").glob("ps*.ipynb"))]
+    config = (tmp_path / "c" / "nbgrader_config.py").read_text()
+    for word in ("ConfinedExecute", "VerifyRecords", "GuardCells", "ConfinedKernelManager.hide"):
+        assert word in config
+    compile(config, "nbgrader_config.py", "exec")
+    assert str((tmp_path / "c").resolve()) in config and str(ROOT) in config
+    fake = tmp_path / "repo"
+    (fake / "problem_sets").mkdir(parents=True)
+    import nbformat
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("assert check('x', 1)")])
+    nb.cells[0].id = "x-check"
+    nbformat.write(nb, fake / "problem_sets" / "ps01_x.ipynb")
+    with pytest.raises(ValueError, match="regenerate the problem sets"):
+        course.write_course(tmp_path / "d", root=fake)
+    with pytest.raises(ValueError, match="outside the repository"):
+        course.write_course(ROOT / "build" / "course")
+
+
+def test_record_shows_the_verdict_leaves_one_record_and_a_wrong_answer_stops_with_the_hint(
+    monkeypatch,
+):
+    import IPython.display
+
+    from course_lib.exercises import W
+    from course_lib.record import record
+
+    shown = []
+    monkeypatch.setattr(IPython.display, "display", lambda data, raw: shown.append((data, raw)))
+    right = _namespace("hat_fifth")["answer_hat_fifth"]
+    assert record("hat_fifth", right, check("hat_fifth", right)) is None
+    ((data, raw),) = shown
+    assert raw and data["text/plain"] == "✓ hat_fifth: correct."
+    assert verify.verdict("hat_fifth", data[MIME]).ok
+    shown.clear()
+    with pytest.raises(CheckFailed, match="^✗ hat_fifth: your answer is the negative"):
+        record("hat_fifth", -right, check("hat_fifth", -right))
+    ((data, raw),) = shown
+    assert data["text/plain"] == "" and data[MIME]["kind"] == "matrix"
+    assert verify.verdict("hat_fifth", data[MIME]).status == "wrong"
+    assert W in parse(data[MIME]["answer"]).free_symbols

@@ -1,0 +1,78 @@
+"""Reference solutions of chapter 5 (instructor side; not part of the installed package)."""
+
+SOLUTIONS = {
+    "quaternion_of_turn": """\
+axis = sp.Matrix([1, 2, 2]) / 3  # unit: ‖(1, 2, 2)‖ = 3
+half = sp.pi / 4  # θ/2
+answer_quaternion_of_turn = [sp.cos(half), *(sp.sin(half) * axis)]""",
+    "angle_from_ros": """\
+x, y, z, w = 0.0, 0.0, 0.6, 0.8  # ROS order: scalar last
+answer_angle_from_ros = 2 * np.arctan2(z, w)""",
+    "compose_quaternions": """\
+q_x = quaternion.from_axis_angle([1, 0, 0], np.pi / 2)
+q_z = quaternion.from_axis_angle([0, 0, 1], np.pi / 2)
+answer_compose_quaternions = quaternion.multiply(q_z, q_x)  # world axes: from the left""",
+    "proper_euler_angles": """\
+R = sp.Matrix(
+    [
+        [sp.Rational(1, 2), sp.sqrt(3) / 2, 0],
+        [sp.sqrt(3) / 4, -sp.Rational(1, 4), -sp.sqrt(3) / 2],
+        [-sp.Rational(3, 4), sp.sqrt(3) / 4, -sp.Rational(1, 2)],
+    ]
+)
+# R_z(α) R_y(β) R_z(γ): third column (cα sβ, sα sβ, cβ), third row (−sβ cγ, sβ sγ, cβ)
+alpha = sp.atan2(R[1, 2], R[0, 2])
+beta = sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
+gamma = sp.atan2(R[2, 1], -R[2, 0])
+answer_proper_euler_angles = [alpha, beta, gamma]  # (−π/2, 2π/3, π/6)""",
+    "unreachable_omega": """\
+phi = sp.pi / 6  # roll 30°, pitch 90°, yaw 0
+Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
+Ry = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])  # R_y(90°)
+e_x, e_y, e_z = sp.eye(3)[:, 0], sp.eye(3)[:, 1], sp.eye(3)[:, 2]
+yaw_col, pitch_col, roll_col = Rx.T * Ry.T * e_z, Rx.T * e_y, e_x  # yaw_col = −roll_col
+n = roll_col.cross(pitch_col)
+answer_unreachable_omega = list(n / n.norm())  # (0, 1/2, √3/2)""",
+    "slerp_angular_velocity": """\
+q0 = np.array([np.sqrt(2) / 2, np.sqrt(2) / 2, 0, 0])
+q1 = np.array([-np.sqrt(2) / 4, -np.sqrt(2) / 4, -np.sqrt(6) / 4, -np.sqrt(6) / 4])
+R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
+T = 3.0
+answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world: (0, 0, 2π/9)""",
+    "angle_between_quaternions": """\
+q0, q1 = np.array([0.6, 0.8, 0, 0]), np.array([-0.8, 0, 0, 0.6])
+answer_angle_between_quaternions = 2 * np.arccos(abs(q0 @ q1))""",
+}
+
+MISTAKES = {
+    "quaternion_of_turn": {
+        "full_angle": "[sp.cos(2 * half), *(sp.sin(2 * half) * axis)]",
+        "not_unit": "[sp.cos(half), *(sp.sin(half) * 3 * axis)]",
+        "scalar_last": "[*(sp.sin(half) * axis), sp.cos(half)]",
+        "negated": "[-sp.cos(half), *(-sp.sin(half) * axis)]",
+    },
+    "angle_from_ros": {"scalar_first": "2 * np.arccos(x)", "half": "np.arctan2(z, w)"},
+    "compose_quaternions": {
+        "order": "quaternion.multiply(q_x, q_z)",
+        "negated": "-quaternion.multiply(q_z, q_x)",
+    },
+    "proper_euler_angles": {
+        "reversed": "[gamma, beta, alpha]",
+        "gamma_sign": "[alpha, beta, sp.atan2(R[2, 1], R[2, 0])]",
+        "negative_beta": "[alpha + sp.pi, -beta, gamma - sp.pi]",
+    },
+    "unreachable_omega": {
+        "world_frame": "[1, 0, 0]  # normal of e_z, R_z(0) e_y, R_y(90°) e_x",
+        "no_transpose": "list((lambda m: m / m.norm())(roll_col.cross(Rx * e_y)))",
+        "parallel_columns": "list(roll_col.cross(yaw_col))",
+        "sign": "list(-n / n.norm())",
+    },
+    "slerp_angular_velocity": {
+        "body_frame": "so3.log(R0.T @ R1) / T",
+        "per_move": "so3.log(R1 @ R0.T)",
+        "half_angle": "so3.log(R1 @ R0.T) / T / 2",
+        "long_way": "(lambda q: q[1:] / np.linalg.norm(q[1:]) * 2 * np.arccos(q[0]) / T)("
+        "quaternion.multiply(q1, quaternion.conjugate(q0)))",
+    },
+    "angle_between_quaternions": {"long_way": "2 * np.arccos(q0 @ q1)"},
+}

@@ -1,5 +1,6 @@
 """The JupyterLab server of the browser test: started on a free localhost port with a random
-token and a throw-away configuration, stopped with everything it started (kernels included).
+token and a throw-away configuration (:mod:`lab_config`), stopped with everything it started
+(kernels included).
 
 ``Server(tmp, root_dir)`` starts it (everything it writes stays under ``tmp``); ``wait_ready``
 waits for its REST API; ``stop`` shuts it down, kernels first, and checks that no process of
@@ -9,7 +10,6 @@ it is left and its port is closed.
 import json
 import os
 import secrets
-import shutil
 import signal
 import socket
 import subprocess
@@ -19,7 +19,8 @@ import urllib.error
 import urllib.request
 from pathlib import Path
 
-from common import HERE, POLL, CheckFailed
+import lab_config
+from common import POLL, CheckFailed
 
 
 def free_port():
@@ -34,15 +35,6 @@ def port_open(port):
         return s.connect_ex(("127.0.0.1", port)) == 0
 
 
-def write_jupyter_config(config_dir):
-    """The throw-away JUPYTER_CONFIG_DIR: server options, page config and setting overrides."""
-    labconfig = config_dir / "labconfig"
-    labconfig.mkdir(parents=True)
-    shutil.copy(HERE / "jupyter_config.json", config_dir / "jupyter_config.json")
-    shutil.copy(HERE / "page_config.json", labconfig / "page_config.json")
-    shutil.copy(HERE / "setting_overrides.json", labconfig / "default_setting_overrides.json")
-
-
 class Server:
     """JupyterLab in its own process group, with everything it writes under ``tmp``."""
 
@@ -52,7 +44,7 @@ class Server:
         self.url = f"http://127.0.0.1:{self.port}"
         self.log_path = tmp / "jupyterlab.log"
         config_dir = tmp / "config"
-        write_jupyter_config(config_dir)
+        lab_config.write(config_dir)
         env = dict(os.environ)
         env.update(
             JUPYTER_CONFIG_DIR=str(config_dir),

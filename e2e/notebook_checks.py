@@ -12,13 +12,18 @@ import time
 import urllib.parse
 from pathlib import Path
 
-from common import ROOT, CheckFailed, KernelStalled, js, log, poll
+from common import POLL, ROOT, CheckFailed, KernelStalled, js, log, poll
+from view_checks import check_folds, check_players, outside_requests
 from widget_checks import check_widgets
 
 VIEWPORT = {"width": 1280, "height": 900}
 MAX_SCREENSHOT_HEIGHT = 16000  # Chromium's texture limit is a little above this
 # A notebook whose first cell has not started this long after "run all" is stalled, not slow.
 NO_START_SECONDS = 40
+# How long one cell scrolled into view may take to typeset and load its images.
+CELL_SETTLE_SECONDS = 20
+# Cells queued while the kernel says idle this long: the queued cells will never run.
+IDLE_STALL = 30
 MATH_MARKERS = ("$", "\\(", "\\[", "\\begin{")
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
@@ -67,6 +72,7 @@ def wait_for_run(page, timeout):
     """Wait until every non-empty code cell ran (or one failed) and the kernel is idle."""
     stable = {"n": 0}
     start = time.monotonic()
+    progress = {"ran": -1, "since": start}
 
     def done():
         state = page.evaluate(js("state"))
@@ -80,6 +86,14 @@ def wait_for_run(page, timeout):
         errored = any(o["type"] == "error" for c in code for o in c["outputs"])
         finished = all(c["count"] is not None for c in code)
         busy = state["kernel"] != "idle" or any(c["state"] == "running" for c in code)
+        ran = sum(c["count"] is not None for c in code)
+        if ran != progress["ran"] or state["kernel"] != "idle":
+            progress.update(ran=ran, since=time.monotonic())
+        elif not (finished or errored) and time.monotonic() - progress["since"] > IDLE_STALL:
+            raise KernelStalled(
+                f"the kernel is idle and no cell has run for {IDLE_STALL} s, yet "
+                f"{len(code) - ran} cell(s) are still queued"
+            )
         if (finished or errored) and not busy:
             stable["n"] += 1
         else:
@@ -120,17 +134,41 @@ def check_outputs(state, problems):
 
 
 def check_dom(page, state, problems, timeout):
-    """MathJax, figures and widgets, as displayed. Waits for typesetting and images to load."""
+    """MathJax, figures and widgets, as displayed.
 
-    def settled():
-        dom = page.evaluate(js("dom"))
-        return dom if not dom_problems(state, dom) else None
-
-    try:
-        dom = poll(settled, timeout, "math, figures and widgets to render")
-    except CheckFailed:
-        dom = page.evaluate(js("dom"))
-        problems.extend(dom_problems(state, dom))
+    JupyterLab's windowing (on by default) renders a cell off screen late or not at all, and
+    an image off screen has no size: so every cell that is not right at first look, and every
+    cell with an image, an HTML output or a widget, is scrolled into view as a student would
+    and looked at there (polled until it settles, within ``timeout`` for the whole notebook).
+    """
+    t0 = time.monotonic()
+    deadline = t0 + timeout
+    stops = page.evaluate(js("sweep"))
+    dom = page.evaluate(js("dom"), None)
+    if dom["n"] != len(state["cells"]):
+        problems.append(f"{dom['n']} cells on the page, {len(state['cells'])} in the model")
+        return dom
+    shown = {d["i"]: d for d in dom["cells"]}
+    visited = 0
+    for i, cell in enumerate(state["cells"]):
+        if not cell_problems(i, cell, shown[i], in_view=False) and not needs_view(shown[i]):
+            continue
+        visited += 1
+        page.evaluate(js("scroll_to_cell"), i)
+        cell_deadline = min(deadline, time.monotonic() + CELL_SETTLE_SECONDS)
+        while True:
+            shown[i] = page.evaluate(js("dom"), [i])["cells"][0]
+            found = cell_problems(i, cell, shown[i], in_view=True)
+            if not found or time.monotonic() > cell_deadline:
+                break
+            time.sleep(POLL)
+        problems.extend(found)
+    dom = page.evaluate(js("dom"), [])
+    dom["cells"] = [shown[i] for i in range(len(state["cells"]))]
+    log(
+        f"  looked at the page: scrolled through it ({stops} screens), then {visited} cell(s) "
+        f"in view, {time.monotonic() - t0:.1f} s"
+    )
     for text in dom["stderr"]:
         problems.append(f"error/stderr shown on the page: {text[:300]!r}")
     for src in dom["broken"]:
@@ -140,45 +178,50 @@ def check_dom(page, state, problems, timeout):
     return dom
 
 
-def output_problem(i, j, o, d):
-    """What is wrong with output j of cell i as displayed (d) for the model's output o, if any."""
+def needs_view(shown):
+    """Whether a cell must be seen in view: it has an image, a player or a widget to size."""
+    return any(o["imgs"] or o["widget"] or o["player"] for o in shown["outputs"])
+
+
+def output_problem(i, j, o, d, in_view):
+    """What is wrong with output j of cell i as displayed (d) for the model's output o, if any.
+    Rendered sizes count only ``in_view`` (off screen an image may have no layout)."""
     images = [m for m in o["mimes"] if m.startswith("image/")]
+    where = f"cell {i} output {j}"
     if WIDGET_VIEW in o["mimes"]:
         if not d["widget"]:
-            return f"cell {i} output {j}: widget not rendered"
+            return f"{where}: widget not rendered"
         if d["sliders"] and d["widgetLoaded"] == 0 and d["canvases"] == 0:
-            return f"cell {i} output {j}: slider widget shows no figure"
+            return f"{where}: slider widget shows no figure"
+    elif d["player"] is not None:
+        return None  # the animation player: view_checks.check_players
     elif images and d["loaded"] < 1:
-        return f"cell {i} output {j}: image output ({images[0]}) not displayed"
+        return f"{where}: image output ({images[0]}) not displayed"
     elif "text/html" in o["mimes"] and d["loaded"] < d["imgs"]:
-        return (
-            f"cell {i} output {j}: {d['imgs'] - d['loaded']} image(s) of an HTML output not loaded"
-        )
+        return f"{where}: {d['imgs'] - d['loaded']} image(s) of an HTML output not loaded"
+    elif in_view and d["shown"] < d["loaded"]:
+        return f"{where}: {d['loaded'] - d['shown']} loaded image(s) shown at 0x0 px in view"
     return None
 
 
-def dom_problems(state, dom):
+def cell_problems(i, cell, shown, in_view):
+    """What is wrong with cell i as displayed (``shown``, from js/dom.js) for the model's
+    ``cell``: LaTeX not typeset, outputs missing, images not displayed."""
     out = []
-    if len(dom["cells"]) != len(state["cells"]):
-        return [f"{len(dom['cells'])} cells on the page, {len(state['cells'])} in the model"]
-    for i, (cell, shown) in enumerate(zip(state["cells"], dom["cells"])):
-        if cell["type"] == "markdown" and has_math(cell["source"]):
-            if shown["mjx"] == 0:
-                out.append(f"markdown cell {i} has LaTeX but no MathJax output (mjx-container)")
-            if shown["merror"]:
-                out.append(f"markdown cell {i}: {shown['merror']} MathJax error(s) (mjx-merror)")
-        if cell["type"] != "code":
-            continue
-        if len(shown["outputs"]) != len(cell["outputs"]):
-            out.append(
-                f"cell {i}: {len(cell['outputs'])} outputs in the model, "
-                f"{len(shown['outputs'])} on the page"
-            )
-            continue
-        for j, (o, d) in enumerate(zip(cell["outputs"], shown["outputs"])):
-            problem = output_problem(i, j, o, d)
-            if problem:
-                out.append(problem)
+    if cell["type"] == "markdown" and has_math(cell["source"]):
+        if shown["mjx"] == 0:
+            out.append(f"markdown cell {i} has LaTeX but no MathJax output (mjx-container)")
+        if shown["merror"]:
+            out.append(f"markdown cell {i}: {shown['merror']} MathJax error(s) (mjx-merror)")
+    if cell["type"] != "code":
+        return out
+    if len(shown["outputs"]) != len(cell["outputs"]):
+        n_model, n_page = len(cell["outputs"]), len(shown["outputs"])
+        return out + [f"cell {i}: {n_model} outputs in the model, {n_page} on the page"]
+    for j, (o, d) in enumerate(zip(cell["outputs"], shown["outputs"])):
+        problem = output_problem(i, j, o, d, in_view)
+        if problem:
+            out.append(problem)
     return out
 
 
@@ -211,7 +254,8 @@ def screenshot(page, path):
         if geo["scrollHeight"] <= geo["clientHeight"]:
             page.screenshot(path=str(path), full_page=True)
             return
-        stack_tiles(page, geo).save(path, optimize=True)
+        # compress_level=1: the sheet is big, and a full zlib pass on it took seconds of CPU.
+        stack_tiles(page, geo).save(path, compress_level=1)
     finally:
         page.set_viewport_size(VIEWPORT)
 
@@ -225,7 +269,7 @@ def stack_tiles(page, geo):
     while offset < total:
         geo = page.evaluate(js("scroller"), offset)
         page.wait_for_timeout(400)
-        shot = Image.open(io.BytesIO(page.screenshot()))
+        shot = Image.open(io.BytesIO(page.screenshot(type="jpeg", quality=90)))
         skip = offset - geo["scrollTop"]  # the last tile stops short: drop what was shot twice
         if offset == 0:
             pieces.append(shot.crop((0, 0, shot.width, top)))  # menu bar and toolbar
@@ -240,14 +284,27 @@ def stack_tiles(page, geo):
     return sheet
 
 
-def open_and_run(page, server, rel_path, problems, timeout):
-    """Open the notebook in a fresh workspace, run all cells, return the model's final state."""
+def open_and_run(page, server, rel_path, problems, timeout, expect_folds=False):
+    """Open the notebook in a fresh workspace, check what it shows on opening (the stored
+    animation players, the folded headings, which are then expanded), run all cells, return
+    the model's final state."""
     workspace = f"e2e-{secrets.token_hex(4)}"
     url = f"{server.url}/lab/workspaces/{workspace}/tree/{urllib.parse.quote(rel_path)}"
     page.goto(f"{url}?reset&token={server.token}")
     t0 = time.monotonic()
     wait_for_open(page, rel_path, timeout=90)
     check_overlays(page, problems, "after opening")
+    t1 = time.monotonic()
+    opened = page.evaluate(js("state"))
+    n_players = check_players(page, opened, problems, "on opening, before any cell runs")
+    n_folds = check_folds(page, problems)
+    if expect_folds and not n_folds:
+        problems.append("no folded heading found in a notebook made to have folds")
+    log(
+        f"  opened in {t1 - t0:.1f} s; checked {n_players} animation player(s) and {n_folds} "
+        f"folded heading(s) in {time.monotonic() - t1:.1f} s"
+    )
+    t0 = time.monotonic()
     page.evaluate(js("run_all"))
     state = wait_for_run(page, timeout)
     n_code = sum(1 for c in state["cells"] if c["type"] == "code")
@@ -255,8 +312,12 @@ def open_and_run(page, server, rel_path, problems, timeout):
     return state
 
 
-def check_notebook(context, server, rel_path, out_dir, timeout):
-    """Open, run and check one notebook.
+def check_notebook(
+    context, server, rel_path, out_dir, timeout, expect_folds=False, all_screenshots=False
+):
+    """Open, run and check one notebook (``expect_folds``: it must have a folded heading).
+    A full-page screenshot is saved when it fails, or always with ``all_screenshots`` (each
+    takes 10-25 s on a loaded 2-core machine: a third of the run for all of them).
 
     Returns the problems found (empty: passed), whether the kernel stalled, and the slider
     release -> redrawn figure latencies measured (ms).
@@ -265,12 +326,17 @@ def check_notebook(context, server, rel_path, out_dir, timeout):
 
     problems, latencies = [], []
     stalled = False
+    urls, page_errors = [], []
+    # Every request of the browser (pages and workers), and the page's websockets.
+    on_request = lambda request: urls.append(request.url)  # noqa: E731
+    context.on("request", on_request)
     page = context.new_page()
-    page_errors = []
+    page.on("websocket", lambda ws: urls.append(ws.url))
     page.on("pageerror", lambda exc: page_errors.append(str(exc)))
     try:
-        state = open_and_run(page, server, rel_path, problems, timeout)
+        state = open_and_run(page, server, rel_path, problems, timeout, expect_folds)
         check_outputs(state, problems)
+        check_players(page, state, problems, "after running all cells")
         dom = check_dom(page, state, problems, timeout=60)
         n_math = sum(c["mjx"] for c in dom["cells"])
         n_img = sum(o["loaded"] + o["widgetLoaded"] for c in dom["cells"] for o in c["outputs"])
@@ -294,16 +360,26 @@ def check_notebook(context, server, rel_path, out_dir, timeout):
         problems.append(f"browser automation failed: {str(exc).splitlines()[0]}")
     finally:
         problems.extend(f"JavaScript error on the page: {e[:300]}" for e in page_errors)
-        finish_page(page, out_dir / f"{Path(rel_path).stem}.png", problems)
+        shot = out_dir / f"{Path(rel_path).stem}.png"
+        finish_page(page, shot if problems or all_screenshots else None, problems)
+        context.remove_listener("request", on_request)
+        for url in outside_requests(urls):
+            problems.append(f"a request leaves the loopback server: {url}")
     return problems, stalled, latencies
 
 
 def finish_page(page, shot, problems):
-    """Screenshot the page, shut its kernel down and close it (a failure here is a problem too,
-    but must not hide the ones found before)."""
+    """Screenshot the page (unless ``shot`` is None), shut its kernel down and close it (a
+    failure here is a problem too, but must not hide the ones found before)."""
     try:
+        if shot is None:
+            raise LookupError("no screenshot wanted")
+        t0 = time.monotonic()
         screenshot(page, shot)
-        log(f"  screenshot {shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot}")
+        name = shot.relative_to(ROOT) if shot.is_relative_to(ROOT) else shot
+        log(f"  screenshot {name} ({time.monotonic() - t0:.1f} s)")
+    except LookupError:
+        pass
     except Exception as exc:
         problems.append(f"screenshot failed: {exc}")
     try:

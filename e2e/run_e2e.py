@@ -1,26 +1,37 @@
 """End-to-end check of the course notebooks in a real JupyterLab, driven by headless Chromium.
 
-    python e2e/run_e2e.py [NOTEBOOKS_DIR] [--out DIR] [--timeout SECONDS]
+    python e2e/run_e2e.py [PATH ...] [--out DIR] [--timeout SECONDS] [--no-fixtures]
 
-(``make e2e`` runs it on ``notebooks/`` with the project's venv.) For every ``*.ipynb`` in
-NOTEBOOKS_DIR (whatever chapters there are) the runner
+(``make e2e`` runs it with the project's venv.) PATH: a folder (its ``*.ipynb``) or one
+notebook; by default ``notebooks/`` (the chapters, whatever there are) and ``problem_sets/``
+(the instructor copies). For every notebook, and for the test's own fixture notebook
+(:mod:`fixtures`: folded headings; ``--no-fixtures`` leaves it out), the runner
 
 1. starts JupyterLab (:mod:`lab_server`) on a free localhost port with a random token, against
-   a temporary COPY of the notebooks (nothing is ever saved into NOTEBOOKS_DIR) and a throw-away
-   Jupyter configuration (``jupyter_config.json``, ``page_config.json``,
-   ``setting_overrides.json``: no news pop-up, no build prompt, no autosave, all cells rendered);
-2. opens the notebook in Chromium (the system's ``/usr/bin/chromium`` through Playwright), runs
-   all cells and waits until every code cell has executed and the kernel is idle, reading the
-   state from the notebook model (``window.jupyterapp``), not from the DOM
+   a temporary COPY of the folders (nothing is ever saved into them) and a throw-away Jupyter
+   configuration (:mod:`lab_config`): JupyterLab's own defaults, windowing included, except
+   no autosave and no news or update checks;
+2. opens the notebook in Chromium (the system's ``/usr/bin/chromium`` through Playwright) and
+   checks what it shows on opening: every animation player (the output of a cell calling
+   ``spin_animation``) shows its first frame without a click, every folded heading
+   (``"jp-MarkdownHeadingCollapsed": true``) is collapsed with the cells under it hidden and
+   shows them when its button is clicked (:mod:`view_checks`);
+3. runs all cells and waits until every code cell has executed and the kernel is idle, reading
+   the state from the notebook model (``window.jupyterapp``), not from the DOM
    (:mod:`notebook_checks`; the page scripts are the files in ``js/``);
-3. checks: no dialog and no notification on screen; no error or stderr output anywhere (also
+4. checks: no dialog and no notification on screen; no error or stderr output anywhere (also
    inside widgets); every markdown cell with LaTeX typeset by MathJax (``mjx-container``, no
-   ``mjx-merror``); every image output displayed as a loaded ``<img>``; every image inside HTML
-   outputs loaded (the animation player); every widget rendered; in every explorer
-   (:mod:`widget_checks`) each slider, dragged and released, redraws the figure (timed from
-   the release to the redrawn canvas), dragging the live figure with the mouse turns the 3D
-   view, and the formula readout is typeset;
-4. saves a full-page screenshot to ``build/e2e/<notebook>.png``.
+   ``mjx-merror``); every image output displayed as a loaded ``<img>`` of non-zero size; every
+   image inside HTML outputs loaded; the animation players again; every widget rendered; in
+   every explorer (:mod:`widget_checks`) each slider, dragged and released, redraws the figure
+   (timed from the release to the redrawn canvas), dragging the live figure with the mouse
+   turns the 3D view, and the formula readout is typeset. JupyterLab does not render cells off
+   screen, so each cell that is not right at first look, and each with an image or a widget,
+   is scrolled into view and looked at there, as a student would;
+5. checks that no request of the browser (page, workers, websockets) left the loopback server
+   while the notebook was open, naming the URL of any that did;
+6. saves a full-page screenshot of a notebook that failed (of every notebook with
+   ``--screenshots``) to ``build/e2e/<notebook>.png``, and one of each explorer.
 
 A notebook that fails is retried once on a new lab: a new server (own copy, own kernels) and a
 new browser profile, nothing kept from the failed attempt; the log says so and says what the
@@ -42,6 +53,7 @@ import tempfile
 from pathlib import Path
 
 from common import HERE, ROOT, CheckFailed, log
+from fixtures import write_fixtures
 from lab_server import Server
 from notebook_checks import VIEWPORT, check_notebook
 
@@ -65,10 +77,20 @@ def _interrupt(signum, frame):
 def parse_args(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument(
-        "notebooks",
-        nargs="?",
-        default=str(ROOT / "notebooks"),
-        help="directory of .ipynb files (default: notebooks/)",
+        "paths",
+        nargs="*",
+        default=[str(ROOT / "notebooks"), str(ROOT / "problem_sets")],
+        help="folders of .ipynb files or single notebooks (default: notebooks/ problem_sets/)",
+    )
+    parser.add_argument(
+        "--screenshots",
+        action="store_true",
+        help="a full-page screenshot of every notebook (default: of those that fail)",
+    )
+    parser.add_argument(
+        "--no-fixtures",
+        action="store_true",
+        help="leave out the test's own fixture notebook (folded headings)",
     )
     parser.add_argument(
         "--out",
@@ -84,19 +106,35 @@ def parse_args(argv):
     return parser.parse_args(argv)
 
 
+def stage(paths, root, fixtures):
+    """Copy the notebooks of ``paths`` (folders or notebooks) to ``root/<folder name>/``, and
+    write the fixtures; returns the notebooks' paths relative to ``root``, and the fixtures'."""
+    notebooks = []
+    for path in paths:
+        files = sorted(path.glob("*.ipynb")) if path.is_dir() else [path]
+        folder = root / (path.name if path.is_dir() else path.parent.name)
+        folder.mkdir(parents=True, exist_ok=True)
+        for f in files:
+            shutil.copy(f, folder / f.name)
+            notebooks.append((folder / f.name).relative_to(root).as_posix())
+    return notebooks, write_fixtures(root) if fixtures else []
+
+
 class Lab:
     """A JupyterLab server on its own copy of the notebooks, and a Chromium profile of its own.
 
-    ``Lab(pw, src)`` starts both; ``close()`` (idempotent) stops them, deletes everything they
-    wrote and returns the cleanup problems (a server or kernel left running).
+    ``Lab(pw, paths, fixtures)`` starts both (``notebooks`` and ``fixtures``: the paths of the
+    copies, relative to the server's root); ``close()`` (idempotent) stops them, deletes
+    everything they wrote and returns the cleanup problems (a server or kernel left running).
     """
 
-    def __init__(self, pw, src):
+    def __init__(self, pw, paths, fixtures=True, all_screenshots=False):
         self.tmp = Path(tempfile.mkdtemp(prefix="course-e2e-"))
         self.server = self.context = None
         try:
-            work = self.tmp / "notebooks"
-            shutil.copytree(src, work, ignore=shutil.ignore_patterns(".ipynb_checkpoints"))
+            work = self.tmp / "root"
+            self.notebooks, self.fixtures = stage(paths, work, fixtures)
+            self.paths, self.all_screenshots = paths, all_screenshots
             self.server = Server(self.tmp, work)
             self.server.wait_ready()
             self.context = pw.chromium.launch_persistent_context(
@@ -110,12 +148,21 @@ class Lab:
         except BaseException:
             self.close()
             raise
-        log(f"JupyterLab on 127.0.0.1:{self.server.port}, on a copy of {src.name}/")
+        folders = sorted({nb.split("/")[0] + "/" for nb in self.notebooks + self.fixtures})
+        log(f"JupyterLab on 127.0.0.1:{self.server.port}, on a copy of {', '.join(folders)}")
 
     def check(self, nb, out_dir, timeout):
         """Check one notebook here: its problems, whether the kernel stalled, the latencies."""
         try:
-            return check_notebook(self.context, self.server, nb, out_dir, timeout)
+            return check_notebook(
+                self.context,
+                self.server,
+                nb,
+                out_dir,
+                timeout,
+                expect_folds=nb in self.fixtures,
+                all_screenshots=self.all_screenshots,
+            )
         finally:
             self.server.note_kernels()
 
@@ -136,7 +183,7 @@ class Lab:
         return problems
 
 
-def check_with_retry(pw, lab, src, nb, out_dir, timeout):
+def check_with_retry(pw, lab, nb, out_dir, timeout):
     """Check one notebook; a failure is retried once on a new lab (said out loud).
 
     Returns the problems, the latencies and the lab to go on with (a new one after a retry).
@@ -151,12 +198,12 @@ def check_with_retry(pw, lab, src, nb, out_dir, timeout):
     log(f"  the server saw: {lab.server.report()}")
     log("  retrying once on a new JupyterLab server with a new browser profile")
     cleanup = lab.close()
-    lab = Lab(pw, src)
+    lab = Lab(pw, lab.paths, bool(lab.fixtures), lab.all_screenshots)
     problems, _, latencies = lab.check(nb, out_dir, timeout)
     return cleanup + problems, latencies, lab
 
 
-def run_all(src, notebooks, out_dir, timeout):
+def run_all(paths, fixtures, out_dir, timeout, all_screenshots):
     """Start the server and the browser, check every notebook, stop everything.
 
     Returns {notebook: problems} and the slider latencies of all notebooks (ms)."""
@@ -167,14 +214,13 @@ def run_all(src, notebooks, out_dir, timeout):
     try:
         with sync_playwright() as pw:
             try:
-                lab = Lab(pw, src)
+                lab = Lab(pw, paths, fixtures, all_screenshots)
+                notebooks = lab.notebooks + lab.fixtures
                 log(f"{len(notebooks)} notebook(s)")
                 for nb in notebooks:
                     log(f"{nb}")
-                    problems, times, lab = check_with_retry(
-                        pw, lab, src, nb.as_posix(), out_dir, timeout
-                    )
-                    results[str(nb)] = problems
+                    problems, times, lab = check_with_retry(pw, lab, nb, out_dir, timeout)
+                    results[nb] = problems
                     latencies.extend(times)
             finally:
                 if lab is not None:
@@ -204,17 +250,17 @@ def report(results, latencies, out_dir):
     if failed:
         log(f"{len(failed)} of {len(results)} failed")
         return 1
-    log(f"all {len(results)} notebook(s) passed; screenshots in {out_dir}")
+    log(f"all {len(results)} notebook(s) passed; screenshots (if any) in {out_dir}")
     return 0
 
 
 def main(argv=None):
     args = parse_args(argv)
-    src = Path(args.notebooks).resolve()
-    notebooks = sorted(p.relative_to(src) for p in src.glob("*.ipynb"))
-    if not notebooks:
-        log(f"no notebooks (*.ipynb) in {src}")
-        return 1
+    paths = [Path(p).resolve() for p in args.paths]
+    for path in paths:
+        if not (path.suffix == ".ipynb" and path.is_file() or list(path.glob("*.ipynb"))):
+            log(f"no notebook (*.ipynb) at {path}")
+            return 1
     if not CHROMIUM.exists():
         log(f"{CHROMIUM} is missing: install Debian's chromium package (apt-get install chromium)")
         return 1
@@ -222,7 +268,9 @@ def main(argv=None):
     out_dir.mkdir(parents=True, exist_ok=True)
     # SIGTERM (e.g. from a CI timeout) unwinds through the finally blocks like Ctrl-C does.
     signal.signal(signal.SIGTERM, _interrupt)
-    results, latencies = run_all(src, notebooks, out_dir, args.timeout)
+    results, latencies = run_all(
+        paths, not args.no_fixtures, out_dir, args.timeout, args.screenshots
+    )
     return report(results, latencies, out_dir)
 
 

@@ -22,6 +22,9 @@ def check_widgets(page, expected, problems, timeout, shot_prefix=None):
         problems.append(f"{expected} widget output(s) in the model but no slider on the page")
     latencies = []
     for k in range(n):
+        # Seen as a student sees it: in view (JupyterLab does not render cells off screen).
+        page.locator(f'[data-e2e-widget="{k}"]').scroll_into_view_if_needed()
+        page.wait_for_timeout(300)
         labels = page.evaluate(js("widget_sliders"), k)
         first = page.evaluate(js("widget_figure"), [k, 0])
         if first["math"] and first["mathTypeset"] < first["math"]:

@@ -22,7 +22,7 @@
     src: src,
     loaded: loaded,
     canvas: !!canvas,
-    readout: readout ? readout.innerText : null,
+    readout: readout ? readout.textContent : null,
     stderr: box ? box.querySelectorAll('[data-mime-type="application/vnd.jupyter.stderr"]').length : 0,
     math: math,
     mathTypeset: box ? box.querySelectorAll('.widget-htmlmath mjx-container').length : 0,

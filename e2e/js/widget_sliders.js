@@ -3,6 +3,6 @@
   const box = document.querySelector(`[data-e2e-widget="${k}"]`);
   return box ? Array.from(box.querySelectorAll('.widget-slider')).map(s => {
     const label = s.querySelector('.widget-label');
-    return label ? label.innerText.trim() : '';
+    return label ? label.textContent.trim() : '';
   }) : [];
 }

@@ -64,3 +64,21 @@ def test_long_outputs_and_notes_on_the_notes_are_counted(tmp_path):
     counts = cc.count(_notebook(tmp_path, [long, note, again]))
     assert counts.longest_output == 25 and counts.notes_on_notes == 2
     assert set(counts.over()) == {"longest_output"}
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.name)
+def test_every_fold_is_a_bare_heading_that_hides_something(path):
+    """Regression: chapter 03's "Going deeper: Errata" held its text in the heading cell and the
+    next heading followed at once, so the fold hid nothing (found by the browser test)."""
+    cells = nbformat.read(path, as_version=4).cells
+    for i, cell in enumerate(cells):
+        if not cell.metadata.get(cc.FOLD):
+            continue
+        assert cell.source.strip().count("\n") == 0, (
+            f"{path.name} {cell.id}: text under the heading"
+        )
+        level = cc._level(cell)
+        nxt = cells[i + 1] if i + 1 < len(cells) else None
+        assert nxt is not None and not (cc._level(nxt) is not None and cc._level(nxt) <= level), (
+            f"{path.name} {cell.id}: the fold hides nothing"
+        )

@@ -30,3 +30,35 @@ nb_execution_mode = "off"
 nb_render_markdown_format = "myst"  # Markdown(...) outputs (tables) are parsed, math included
 myst_enable_extensions = ["dollarmath", "amsmath"]
 suppress_warnings = ["mystnb.unknown_mime_type"]
+
+
+def _fold_going_deeper(app, pagename, templatename, context, doctree):
+    """Fold every "Going deeper" part of a page, as JupyterLab folds it in the notebook.
+
+    A notebook folds a part with a heading cell marked ``"jp-MarkdownHeadingCollapsed": true``,
+    hiding everything up to the next heading of the same or a higher level. Sphinx puts exactly
+    that span in one ``<section>``, whose id comes from the heading ("going-deeper-..."): the
+    heading becomes the ``<summary>`` of a closed ``<details class="going-deeper">`` holding the
+    rest of the section.
+    """
+    body = context.get("body") or ""
+    if 'id="going-deeper' not in body:
+        return
+    from bs4 import BeautifulSoup  # installed with nbconvert
+
+    soup = BeautifulSoup(body, "html.parser")
+    for section in soup.find_all("section", id=lambda i: bool(i) and i.startswith("going-deeper")):
+        heading = section.find(["h2", "h3", "h4", "h5", "h6"], recursive=False)
+        if heading is None:
+            continue
+        details = soup.new_tag("details", attrs={"class": "going-deeper"})
+        summary = soup.new_tag("summary")
+        heading.wrap(summary)
+        summary.wrap(details)
+        for sibling in list(details.next_siblings):
+            details.append(sibling.extract())
+    context["body"] = str(soup)
+
+
+def setup(app):
+    app.connect("html-page-context", _fold_going_deeper)

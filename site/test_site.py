@@ -194,6 +194,23 @@ def test_every_figure_of_the_chapter_is_on_its_page(visit, chapter):
     assert stills >= explorers, f"{chapter}: the explorer's still picture is missing"
 
 
+@pytest.mark.parametrize("chapter", NOTEBOOK_PAGES)
+def test_going_deeper_parts_are_folded_as_in_jupyterlab(visit, chapter):
+    """Issue 18: every heading the notebook folds ("jp-MarkdownHeadingCollapsed") is a closed
+    <details> on the page, its heading the summary, the rest of its part inside."""
+    cells = json.loads((EXECUTED / f"{chapter}.ipynb").read_text())["cells"]
+    folds = [c for c in cells if c.get("metadata", {}).get("jp-MarkdownHeadingCollapsed")]
+    page, _ = visit(chapter)
+    found = page.eval_on_selector_all(
+        "details.going-deeper",
+        "els => els.map(e => [e.open, e.querySelector('summary').innerText,"
+        " e.children.length, e.querySelector('div.cell, p') !== null])",
+    )
+    assert len(found) == len(folds), f"{chapter}: {len(found)} folded parts, {len(folds)} folds"
+    for is_open, summary, children, content in found:
+        assert not is_open and summary.startswith("Going deeper") and children > 1 and content
+
+
 @pytest.mark.parametrize("name", PAGES)
 def test_no_horizontal_overflow_at_1200_px(visit, name):
     """Regression (issue 16): the chapter pages were 1357 px wide in a 1200 px window."""

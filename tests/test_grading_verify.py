@@ -184,17 +184,18 @@ def test_the_record_holds_only_the_students_answer_and_a_failed_check_is_one_lin
     assert len(lines) == 1 and lines[0].endswith("and whole ") and isinstance(err, AssertionError)
 
 
-def test_the_confined_kernel_command_hides_the_instructors_folders_and_drops_privileges():
-    cmd = sandbox.bwrap_command(["/course", "/repo"], ["/repo/course_lib"], 7, ["--x"])
+def test_the_confined_kernel_command_is_an_allow_list_without_network_or_privileges():
+    cmd = sandbox.bwrap_command(["/venv", "/repo/course_lib"], "/tmp/k1", ["-f", "/tmp/k1/c.json"])
     text = " ".join(cmd)
-    assert "--ro-bind / /" in text and "--tmpfs /course" in text and "--remount-ro /course" in text
-    assert "--ro-bind /repo/course_lib /repo/course_lib" in text
-    for flag in ("--die-with-parent", "--unshare-pid", "--cap-drop ALL", "--chdir /tmp/work"):
+    assert "--ro-bind / /" not in text and "--remount-ro /" in text
+    assert "--ro-bind /repo/course_lib /repo/course_lib" in text and "/repo " not in text
+    assert "--bind /tmp/k1 /tmp/k1" in text and "--size" in text
+    for flag in ("--unshare-all", "--die-with-parent", "--new-session", "--clearenv"):
         assert flag in text
-    assert cmd.index("--tmpfs") < cmd.index("--remount-ro")
+    assert "--cap-drop ALL" in text and "--share-net" not in text
     python = cmd.index("--") + 1
     assert cmd[python + 1] == "-P" and "import course_lib" in cmd[python + 3]
-    assert cmd[-1] == "--x"
+    assert cmd[-2:] == ["-f", "/tmp/k1/c.json"]
 
 
 def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_check_cells(

@@ -61,7 +61,7 @@ from nbgrader.preprocessors import (
     SaveAutoGrades,
 )
 
-from grader.preprocessor import ConfinedExecute, GuardCells, VerifyRecords
+from grader.preprocessor import CapOutput, ConfinedExecute, GuardCells, VerifyRecords
 
 c = get_config()  # noqa: F821
 c.CourseDirectory.root = {root!r}
@@ -80,6 +80,7 @@ c.Autograde.sanitize_preprocessors = [
 c.Autograde.autograde_preprocessors = [
     ConfinedExecute,
     VerifyRecords,
+    CapOutput,
     IgnorePattern,
     ClearMetadataPreprocessor,
     LimitOutput,
@@ -89,6 +90,7 @@ c.Autograde.autograde_preprocessors = [
 ]
 c.Execute.timeout = {timeout}  # seconds per cell
 c.ConfinedKernelManager.hide = {hide!r}
+c.CapOutput.max_bytes = 100_000  # output text kept per cell (autograded notebook, feedback)
 c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on one whole line
 """
 

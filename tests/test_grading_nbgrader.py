@@ -272,3 +272,26 @@ def test_slow_attacks(course):
     for student in (*attacks, "s_folder_solved_names"):
         assert got[student] == (0, TOTAL), (student, got)
     assert not Path("/tmp/forged").exists()
+
+
+FAKE_MATHJAX = "window.ROTATIONS_FAKE_MATHJAX = {a: {b: 1}}; // {{ not a template {% x %} {# #}\n"
+
+
+@pytest.mark.slow_grading
+def test_feedback_inlines_mathjax_instead_of_the_cdn(tmp_path):
+    """nbgrader's feedback template loaded MathJax 2.7.7 from a CDN: raw TeX offline."""
+    js = tmp_path / "tex-svg.js"
+    js.write_text(FAKE_MATHJAX)
+    root = tmp_path / "course"
+    write_course(root, mathjax=js)
+    code, out = run(["generate_assignment", PS, "--create"], root)
+    assert code == 0, out
+    submit(root, "a_instructor", "solved")
+    code, out = run(["autograde", PS, "--create"], root)
+    assert code == 0, out
+    code, out = run(["generate_feedback", PS], root)
+    assert code == 0, out
+    (page,) = (root / "feedback" / "a_instructor" / PS).glob("*.html")
+    html = page.read_text()
+    assert FAKE_MATHJAX.strip() in html and "window.MathJax = {tex:" in html
+    assert "cdnjs" not in html and "mathjax/2.7" not in html.lower()

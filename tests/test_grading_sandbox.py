@@ -18,6 +18,7 @@ import threading
 from pathlib import Path
 
 import pytest
+from jupyter_core.paths import jupyter_runtime_dir
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -37,6 +38,8 @@ def attempt(key, fn):
 attempt("solutions", lambda: os.listdir(SOLUTIONS))
 attempt("repo_solutions", lambda: os.listdir(REPO_SOLUTIONS))
 attempt("connection", lambda: open(CONNECTION).read())
+attempt("exchange", lambda: os.listdir("/srv"))
+attempt("graders_runtime", lambda: os.listdir(GRADERS_RUNTIME))
 attempt("runtime", lambda: os.listdir(RUNTIME))
 attempt("environ1", lambda: open("/proc/1/environ", "rb").read().decode())
 attempt("environ", lambda: dict(os.environ))
@@ -91,6 +94,7 @@ def probe(tmp_path_factory):
         "CONNECTION": str(connection),
         "RUNTIME": str(runtime),
         "PORT": server.getsockname()[1],
+        "GRADERS_RUNTIME": jupyter_runtime_dir(),
     }
     code = "".join(f"{k} = {v!r}\n" for k, v in names.items()) + PROBE
     os.environ[MARKER] = "grader-only"
@@ -115,6 +119,12 @@ def test_other_checkouts_solutions_and_the_repository_are_not_in_the_kernels_vie
     out, _, _ = probe
     assert out["solutions"] == "refused FileNotFoundError", out
     assert out["repo_solutions"] == "refused FileNotFoundError", out
+    assert out["exchange"] == "refused FileNotFoundError", out  # nbgrader's exchange
+
+
+def test_the_grading_users_jupyter_runtime_folder_is_not_in_the_kernels_view(probe):
+    out, _, _ = probe
+    assert out["graders_runtime"] == "refused FileNotFoundError", out
 
 
 def test_no_tcp_to_the_hosts_loopback(probe):

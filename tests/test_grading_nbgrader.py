@@ -82,6 +82,9 @@ FOLDER = {
 }
 
 
+FLOOD = "for _ in range(200):\n    print('x' * 10**6)\n"
+
+
 def _snoop(course):
     return f"""\
 import glob, os
@@ -266,12 +269,18 @@ def test_slow_attacks(course):
     for student, prefix in attacks.items():
         submit(course, student, prefix=prefix)
     submit(course, "s_folder_solved_names", files=FOLDER, prefix=REDEFINE_CHECK)
+    submit(course, "s_output_flood", "solved", prefix=FLOOD)
     code, out = run(["autograde", PS, "--create"], course)
     assert code == 0, out
     got = scores(course)
     for student in (*attacks, "s_folder_solved_names"):
         assert got[student] == (0, TOTAL), (student, got)
     assert not Path("/tmp/forged").exists()
+    # 200 x 1 MB of stdout: graded as usual, and the autograded notebook stays small
+    assert got["s_output_flood"] == (TOTAL, TOTAL), got
+    (path,) = (course / "autograded" / "s_output_flood" / PS).glob("*.ipynb")
+    assert path.stat().st_size < 2_000_000, path.stat().st_size
+    assert "bytes of output cut" in path.read_text()
 
 
 FAKE_MATHJAX = "window.ROTATIONS_FAKE_MATHJAX = {a: {b: 1}}; // {{ not a template {% x %} {# #}\n"

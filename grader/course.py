@@ -23,6 +23,7 @@ Then the plain nbgrader commands are the instructor's whole workflow::
 from __future__ import annotations
 
 import argparse
+import json
 import re
 import sys
 from pathlib import Path
@@ -35,11 +36,36 @@ if str(ROOT) not in sys.path:
 
 from tools import sync_exercises  # noqa: E402
 
-__all__ = ["problem_sets", "config_text", "write_course", "hidden_folders"]
+__all__ = ["problem_sets", "config_text", "write_course", "hidden_folders", "write_feedback_math"]
 
 KERNELSPEC = {"name": "python3", "display_name": "Python 3 (ipykernel)", "language": "python"}
 TIMEOUT = 60
 RECORD = "record("  # what every check cell calls (course_lib.record)
+#: MathJax 3 as the site build installs it from npm (``make site``).
+MATHJAX = Path("build") / "site-deps" / "node_modules" / "mathjax" / "es5" / "tex-svg.js"
+FEEDBACK = "rotations_feedback"  # nbconvert template: nbgrader's feedback, math offline
+MATHJAX_MACRO = """\
+{%- macro mathjax(url=None) -%}
+<script>
+window.MathJax = {tex: {inlineMath: [["$", "$"], ["\\\\(", "\\\\)"]],
+  displayMath: [["$$", "$$"], ["\\\\[", "\\\\]"]], processEscapes: true},
+  svg: {fontCache: "global"}};
+</script>
+<script>{% raw %}"""
+FEEDBACK_CONFIG = """
+# Feedback renders its math offline: MathJax 3 (SVG output, no web fonts) inlined into each
+# feedback page by the template in templates/{name}/ (written by `make course`).
+import os as _os
+
+import nbgrader as _nbgrader
+
+_formgrader = _os.path.join(_os.path.dirname(_nbgrader.__file__), "server_extensions", "formgrader")
+c.HTMLExporter.template_name = {name!r}
+c.HTMLExporter.extra_template_basedirs = [
+    {templates!r},
+    _os.path.join(_formgrader, "templates"),
+]
+"""
 
 CONFIG = """\
 # The course's nbgrader configuration, written by `make course` (grader/course.py).
@@ -61,7 +87,7 @@ from nbgrader.preprocessors import (
     SaveAutoGrades,
 )
 
-from grader.preprocessor import ConfinedExecute, GuardCells, VerifyRecords
+from grader.preprocessor import CapOutput, ConfinedExecute, GuardCells, VerifyRecords
 
 c = get_config()  # noqa: F821
 c.CourseDirectory.root = {root!r}
@@ -80,6 +106,7 @@ c.Autograde.sanitize_preprocessors = [
 c.Autograde.autograde_preprocessors = [
     ConfinedExecute,
     VerifyRecords,
+    CapOutput,
     IgnorePattern,
     ClearMetadataPreprocessor,
     LimitOutput,
@@ -89,6 +116,7 @@ c.Autograde.autograde_preprocessors = [
 ]
 c.Execute.timeout = {timeout}  # seconds per cell
 c.ConfinedKernelManager.hide = {hide!r}
+c.CapOutput.max_bytes = 100_000  # output text kept per cell (autograded notebook, feedback)
 c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on one whole line
 """
 
@@ -147,13 +175,34 @@ def config_text(course, root=ROOT, timeout=TIMEOUT):
     )
 
 
-def write_course(course, root=ROOT):
-    """Write the course directory; returns the assignment names."""
+def write_feedback_math(course, mathjax):
+    """The feedback template whose ``mathjax()`` macro inlines MathJax's ``tex-svg.js``
+    (nbgrader's feedback template calls nbconvert's macro without a URL: always the CDN);
+    returns the config lines that select it."""
+    js = Path(mathjax).read_text(encoding="utf-8")
+    if "{% endraw" in js or "</script" in js.lower():
+        raise ValueError(f"{mathjax}: cannot be inlined into a page")
+    folder = Path(course) / "templates" / FEEDBACK
+    folder.mkdir(parents=True, exist_ok=True)
+    conf = {"base_template": "feedback", "mimetypes": {"text/html": True}}
+    (folder / "conf.json").write_text(json.dumps(conf, indent=2) + "\n")
+    macro = MATHJAX_MACRO + js + "{% endraw %}</script>\n{%- endmacro %}\n"
+    (folder / "mathjax.html.j2").write_text(macro, encoding="utf-8")
+    return FEEDBACK_CONFIG.format(name=FEEDBACK, templates=str(folder.parent))
+
+
+def write_course(course, root=ROOT, mathjax=None):
+    """Write the course directory; returns the assignment names. ``mathjax``: the
+    ``tex-svg.js`` of MathJax 3 for offline feedback (default: the site build's, when there)."""
     course = Path(course).resolve()
     if course == root.resolve() or root.resolve() in course.parents:
         raise ValueError(f"COURSE must be outside the repository, got {course}")
     course.mkdir(parents=True, exist_ok=True)
-    (course / "nbgrader_config.py").write_text(config_text(course, root))
+    mathjax = Path(mathjax) if mathjax else root / MATHJAX
+    config = config_text(course, root)
+    if mathjax.is_file():
+        config += write_feedback_math(course, mathjax)
+    (course / "nbgrader_config.py").write_text(config)
     names, sets = [], problem_sets(root)
     for (_, filename), nb in sets.items():
         stale = [
@@ -175,15 +224,22 @@ def write_course(course, root=ROOT):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("course", metavar="DIR", help="the course directory to write")
+    parser.add_argument("--mathjax", help="MathJax 3's es5/tex-svg.js (default: make site's)")
     args = parser.parse_args(argv)
     if not re.fullmatch(r"[^\0]+", args.course):
         parser.error("DIR must be a folder name")
     try:
-        names = write_course(Path(args.course))
+        names = write_course(Path(args.course), mathjax=args.mathjax)
     except (OSError, ValueError) as err:
         print(f"make course: {err}", file=sys.stderr)
         return 2
     print(f"{args.course}: nbgrader_config.py and source/ for {', '.join(names)}")
+    if not (Path(args.course) / "templates" / FEEDBACK).is_dir():
+        print(
+            "make course: feedback loads MathJax from a CDN (run `make site` first, or pass "
+            "--mathjax .../mathjax/es5/tex-svg.js, for math offline)",
+            file=sys.stderr,
+        )
     return 0
 
 

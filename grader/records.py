@@ -5,7 +5,8 @@ A record's answer is sympy's ``srepr`` text, e.g.
 syntax tree, and the tree is walked: only calls of the constructors in :data:`CONSTRUCTORS`,
 integer, float-string and name literals, lists and keyword assumptions of a symbol are allowed;
 sizes are bounded (:data:`MAX_TEXT`, :data:`MAX_NODES`, :data:`MAX_DEPTH`, integers up to
-:data:`MAX_INTEGER`, exponents up to :data:`MAX_EXPONENT`) *before* any sympy object is built.
+:data:`MAX_INTEGER`, exponents up to :data:`MAX_EXPONENT`, and the exact numbers a power, sum or
+product would build up to :data:`MAX_BITS` bits) *before* any sympy object is built.
 Anything else is :class:`Unreadable` with one line that says what.
 
 Examples
@@ -42,6 +43,7 @@ MAX_DEPTH = 60
 MAX_INTEGER = 10**30
 MAX_EXPONENT = 64
 MAX_NAME = 40
+MAX_BITS = 20_000  # of any exact number built, about 6,000 digits
 
 _FUNCTIONS = {
     f.__name__: f
@@ -171,7 +173,20 @@ def _build(node, depth, count):
         exp = args[1] if len(args) == 2 else None
         if not isinstance(exp, (Integer, Rational)) or abs(exp.p) > MAX_EXPONENT or exp.q > 64:
             _fail(f"{name} needs a rational exponent of at most {MAX_EXPONENT}")
+        if name == "Pow" and _bits(args[0]) * abs(exp.p) > MAX_BITS:
+            _fail(f"a power of a number of more than {MAX_BITS} bits")
+    if name in ("Add", "Mul") and sum(_bits(a) for a in args) > MAX_BITS:
+        _fail(f"a sum or product of numbers of more than {MAX_BITS} bits")
     return CONSTRUCTORS[name](*args)
+
+
+def _bits(obj):
+    """The bits of the largest exact number in ``obj`` (before a power or product of it is
+    built: sympy evaluates those on numbers, and nested powers grow without bound)."""
+    if not isinstance(obj, sp.Basic):
+        return 0
+    numbers = [obj] if isinstance(obj, Rational) else obj.atoms(Rational)
+    return max((max(n.p.bit_length(), n.q.bit_length()) for n in numbers), default=0)
 
 
 def parse(text):

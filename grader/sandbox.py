@@ -1,39 +1,61 @@
 """The confined kernel that runs a submission at ``nbgrader autograde``.
 
 :class:`ConfinedKernelManager` ignores the kernel a notebook names and starts ipykernel under
-Debian's ``bubblewrap`` (``bwrap``):
+Debian's ``bubblewrap`` (``bwrap``) with an **allow-list** view of the machine:
 
-- the whole file system is mounted **read-only** (``--ro-bind / /``), and the only writable
-  places are fresh, empty tmpfs: ``/tmp`` (the kernel's working directory ``/tmp/work``, its
-  ``HOME``) and a private ``/dev``;
-- the instructor's folders (:attr:`ConfinedKernelManager.hide`: the course directory with
-  ``source/``, ``release/``, ``submitted/``, ``autograded/`` and ``gradebook.db``, and the
-  repository with ``tools/solutions``) are covered by empty, read-only tmpfs; only the installed
-  ``course_lib`` and the Python environment are mounted back, read-only;
-- the kernel runs in new PID, IPC and UTS namespaces (``--unshare-pid``), with every
-  capability dropped (so even as root it cannot unmount what covers the instructor's folders),
-  and dies with the ``bwrap`` process the kernel manager stops (``--die-with-parent``);
+- the root is an empty, read-only tmpfs; only what the kernel needs is mounted into it,
+  read-only: the system (``/usr`` and the ``/bin``, ``/lib*`` links), a few files of ``/etc``
+  (:data:`ETC`), the Python installation (``sys.base_prefix``) and environment
+  (``sys.prefix``, with its ``site-packages``) and the folder of the installed ``course_lib``
+  package (for an editable install, that folder only: never ``tools/`` or the repository).
+  Home folders, other checkouts, nbgrader's exchange, Jupyter's runtime folder (the connection
+  files of other kernels) and the course directory do not exist in the kernel's view;
+- the only writable places are a size-limited tmpfs ``/tmp`` (:data:`TMP_BYTES`; the kernel's
+  working directory ``/tmp/work`` and its ``HOME``), a private ``/dev`` and the kernel's own
+  scratch folder (its connection file and ipc sockets), made afresh for each kernel;
+- every namespace bwrap can unshare is new (``--unshare-all``: user, PID, network, IPC, UTS,
+  cgroup): no network at all (the kernel talks to nbgrader over ipc sockets in the scratch
+  folder, not TCP), and ``/proc`` is the sandbox's own (``/proc/1`` is its init); every
+  capability is dropped; the kernel gets a new session and dies with the ``bwrap`` process
+  the kernel manager stops (``--die-with-parent``);
+- the environment is cleared (bwrap's own too, so ``/proc/1/environ`` holds nothing of the
+  grader's): only :func:`kernel_env`;
+- resource limits (:data:`LIMITS`): address space, file size, processes (the process limit
+  does not bind a kernel run by root: Linux exempts uid 0), no core files;
 - Python starts with ``-P`` (the working directory is not put on ``sys.path``), imports the
-  installed ``course_lib`` before any cell runs, and its working directory is the empty
-  scratch folder: a ``course_lib/`` folder handed in beside the notebook is never seen.
+  installed ``course_lib`` before any cell runs: a ``course_lib/`` folder handed in beside the
+  notebook is never seen.
 
-The connection file is handed in as a copy (``--file``), so the kernel writes nothing outside
-its scratch folder. Run as ``python sandbox.py --hide DIR ... --expose DIR ... -- -f FILE``
-(the kernel manager does); it only uses the standard library, since the repository that holds
-it is hidden from the kernel.
+Run as ``python sandbox.py --scratch DIR --expose DIR ... -- -f FILE`` (the kernel manager
+does); it only uses the standard library.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import resource
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
-__all__ = ["ConfinedKernelManager", "bwrap_command", "BOOT"]
+__all__ = ["ConfinedKernelManager", "bwrap_command", "kernel_env", "BOOT", "LIMITS"]
 
 SCRATCH = "/tmp/work"
+TMP_BYTES = 256 * 2**20
+#: Resource limits of the kernel (soft = hard).
+LIMITS = {
+    "RLIMIT_AS": 4 * 2**30,
+    "RLIMIT_FSIZE": 64 * 2**20,
+    "RLIMIT_NPROC": 64,
+    "RLIMIT_CORE": 0,
+}
+#: The system folders mounted read-only (or re-created as the same symbolic links).
+SYSTEM = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
+#: The files of /etc the kernel may read (no secrets: the loader, time zone, users, fonts).
+ETC = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "localtime", "passwd", "group")
+ETC += ("nsswitch.conf", "alternatives", "fonts", "mime.types")
 #: What the kernel runs first: the installed course_lib, then ipykernel.
 BOOT = (
     "import sys\n"
@@ -44,20 +66,11 @@ BOOT = (
 )
 
 
-def bwrap_command(hide, expose, connection_fd, kernel_args, python=sys.executable, path=()):
-    """The ``bwrap`` argv that starts ipykernel confined (see the module's docstring)."""
-    cmd = [shutil.which("bwrap") or "bwrap", "--ro-bind", "/", "/", "--dev", "/dev"]
-    cmd += ["--proc", "/proc", "--tmpfs", "/tmp"]
-    for folder in hide:
-        cmd += ["--tmpfs", folder]
-    for folder in expose:
-        cmd += ["--ro-bind", folder, folder]
-    for folder in hide:  # empty and read-only (after the mount points above were made)
-        cmd += ["--remount-ro", folder]
-    cmd += ["--dir", SCRATCH, "--chdir", SCRATCH, "--file", str(connection_fd), "/tmp/kernel.json"]
-    cmd += ["--unshare-pid", "--unshare-ipc", "--unshare-uts", "--die-with-parent"]
-    cmd += ["--new-session", "--cap-drop", "ALL"]
-    env = {
+def kernel_env(path=(), prefix=sys.prefix):
+    """The kernel's whole environment."""
+    return {
+        "PATH": f"{prefix}/bin:/usr/bin:/bin",
+        "LANG": "C.UTF-8",
         "HOME": SCRATCH,
         "IPYTHONDIR": f"{SCRATCH}/.ipython",
         "MPLCONFIGDIR": f"{SCRATCH}/.matplotlib",
@@ -66,47 +79,63 @@ def bwrap_command(hide, expose, connection_fd, kernel_args, python=sys.executabl
         "JUPYTER_RUNTIME_DIR": f"{SCRATCH}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
     }
-    for key, value in env.items():
+
+
+def _system():
+    out = []
+    for folder in SYSTEM:
+        if os.path.islink(folder):
+            out += ["--symlink", os.readlink(folder), folder]
+        elif os.path.isdir(folder):
+            out += ["--ro-bind", folder, folder]
+    for name in ETC:
+        out += ["--ro-bind-try", f"/etc/{name}", f"/etc/{name}"]
+    return out
+
+
+def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
+    """The ``bwrap`` argv that starts ipykernel confined (see the module's docstring).
+
+    ``expose``: folders mounted read-only; ``scratch``: the kernel's own folder (connection
+    file, ipc sockets), mounted writable at the same path; ``kernel_args``: ipykernel's.
+    """
+    cmd = [shutil.which("bwrap") or "bwrap", "--unshare-all", "--hostname", "grading"]
+    cmd += ["--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv"]
+    cmd += _system()
+    for folder in expose:
+        cmd += ["--ro-bind", folder, folder]
+    cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMP_BYTES), "--tmpfs", "/tmp"]
+    cmd += ["--bind", str(scratch), str(scratch), "--dir", SCRATCH, "--chdir", SCRATCH]
+    cmd += ["--remount-ro", "/"]
+    for key, value in kernel_env(path).items():
         cmd += ["--setenv", key, value]
-    # jupyter_client's PID means nothing in the kernel's PID namespace: --die-with-parent
-    # ends the kernel with bwrap instead of ipykernel's parent poller.
-    cmd += ["--unsetenv", "JPY_PARENT_PID"]
-    return cmd + ["--", python, "-P", "-c", BOOT, "-f", "/tmp/kernel.json", *kernel_args]
+    return cmd + ["--", python, "-P", "-c", BOOT, *kernel_args]
 
 
-def _split_kernel_args(args):
-    """The connection file (after ``-f``) and the other kernel arguments."""
-    out, connection, it = [], None, iter(args)
-    for arg in it:
-        if arg == "-f":
-            connection = next(it)
-        elif arg.startswith("--f="):
-            connection = arg[4:]
-        else:
-            out.append(arg)
-    return connection, out
+def _limit():
+    for name, value in LIMITS.items():
+        resource.setrlimit(getattr(resource, name), (value, value))
 
 
 def main(argv=None):
     """Replace this process with the confined kernel (the kernel manager stops bwrap)."""
     parser = argparse.ArgumentParser(description="start ipykernel under bubblewrap")
-    parser.add_argument("--hide", action="append", default=[])
     parser.add_argument("--expose", action="append", default=[])
+    parser.add_argument("--scratch", required=True)
     parser.add_argument("--python", default=sys.executable)
     parser.add_argument("--pythonpath", action="append", default=[])
     parser.add_argument("kernel", nargs=argparse.REMAINDER)
     args = parser.parse_args(argv)
     kernel = args.kernel[1:] if args.kernel[:1] == ["--"] else args.kernel
-    connection, rest = _split_kernel_args(kernel)
     if shutil.which("bwrap") is None:
         print("grader.sandbox: bwrap not found (apt-get install -y bubblewrap)", file=sys.stderr)
         return 2
-    fd = os.open(connection, os.O_RDONLY)
-    os.set_inheritable(fd, True)
     quiet = os.open(os.devnull, os.O_WRONLY)  # ipykernel's banner; errors still go to stderr
     os.dup2(quiet, 1)
-    cmd = bwrap_command(args.hide, args.expose, fd, rest, python=args.python, path=args.pythonpath)
-    os.execv(cmd[0], cmd)
+    cmd = bwrap_command(args.expose, args.scratch, kernel, args.python, args.pythonpath)
+    _limit()
+    # bwrap is the sandbox's PID 1: its environment must hold nothing of the grader's either
+    os.execve(cmd[0], cmd, {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8"})
     return 1  # not reached
 
 
@@ -119,30 +148,44 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
 
     class ConfinedKernelManager(AsyncKernelManager):
         """A kernel manager that always starts the confined kernel, whatever the notebook's
-        kernelspec says (nbgrader's ``Execute`` reads the notebook's; this one does not)."""
+        kernelspec says (nbgrader's ``Execute`` reads the notebook's; this one does not).
+        It talks to the kernel over ipc sockets in a fresh private scratch folder."""
 
         hide = List(
             Unicode(),
-            help="Folders the kernel must not see (covered by empty tmpfs).",
+            help="Folders the kernel must never see: exposing a folder that holds one, or "
+            "is inside one (but for the installed course_lib and the Python environment), "
+            "is an error.",
         ).tag(config=True)
+
+        def __init__(self, **kwargs):
+            kwargs["transport"] = "ipc"
+            super().__init__(**kwargs)
+            self.scratch = tempfile.mkdtemp(prefix="rotations-kernel-")
+            self.connection_file = os.path.join(self.scratch, "kernel.json")
+            self.ip = os.path.join(self.scratch, "ipc")
 
         def _expose(self):
             import course_lib
 
-            paths = {str(Path(course_lib.__file__).resolve().parent), str(Path(sys.prefix))}
-            return sorted(p for p in paths if any(_inside(p, h) for h in self.hide))
+            lib = Path(course_lib.__file__).resolve().parent
+            paths = {Path(sys.base_prefix).resolve(), Path(sys.prefix).absolute(), lib}
+            for path in paths:
+                for folder in self.hide:
+                    if _inside(folder, path) and path != lib:
+                        raise ValueError(f"confined kernel: {path} holds hidden {folder}")
+            return sorted(str(p) for p in paths)
 
         @property
         def kernel_spec(self):
             if self._kernel_spec is None:
-                argv = [sys.executable, str(Path(__file__).resolve())]
-                argv += [f"--hide={os.path.abspath(h)}" for h in self.hide]
-                argv += [f"--expose={p}" for p in self._expose()]
                 import course_lib
 
+                argv = [sys.executable, str(Path(__file__).resolve())]
+                argv += [f"--expose={p}" for p in self._expose()]
                 lib = Path(course_lib.__file__).resolve().parent
                 argv += [f"--pythonpath={lib.parent}", "--python", sys.executable]
-                argv += ["--", "-f", "{connection_file}"]
+                argv += [f"--scratch={self.scratch}", "--", "-f", "{connection_file}"]
                 self._kernel_spec = KernelSpec(
                     argv=argv,
                     display_name="Python 3 (confined)",
@@ -151,6 +194,13 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
                     env={},
                 )
             return self._kernel_spec
+
+        async def _async_cleanup_resources(self, restart=False):
+            await super()._async_cleanup_resources(restart=restart)
+            if not restart:
+                shutil.rmtree(self.scratch, ignore_errors=True)
+
+        cleanup_resources = _async_cleanup_resources
 
 
 def _inside(path, folder):

@@ -82,6 +82,9 @@ FOLDER = {
 }
 
 
+FLOOD = "for _ in range(200):\n    print('x' * 10**6)\n"
+
+
 def _snoop(course):
     return f"""\
 import glob, os
@@ -173,6 +176,30 @@ def _malform(nb):
     nb.cells.insert(checks[0] + 1, dup)  # duplicated
 
 
+def _add_grade_cells(nb):
+    """A new graded cell worth 100 points, and the first answer cell made a graded one."""
+    extra = nbformat.v4.new_code_cell("print('free points')")
+    extra.metadata = {
+        "nbgrader": {
+            "grade": True,
+            "grade_id": "free",
+            "locked": False,
+            "points": 100,
+            "solution": False,
+            "schema_version": 3,
+        }
+    }
+    extra.id = "free"
+    nb.cells.append(extra)
+    answer = next(c for c in nb.cells if c.id.endswith("-answer"))
+    answer.metadata["nbgrader"].update(grade=True, points=50)
+
+
+def _exit_in_third_answer(nb):
+    answers = [c for c in nb.cells if c.id.endswith("-answer")]
+    answers[2].source = "import os\nos._exit(0)\n" + answers[2].source
+
+
 def _points_of_cells(nb, ids):
     return sum(c.metadata["nbgrader"]["points"] for c in nb.cells if c.id in ids)
 
@@ -188,15 +215,25 @@ def test_fast_class(course):
     submit(course, "e_snoop", prefix=_snoop(course))
     submit(course, "f_malformed", "solved", edit=_malform)
     submit(course, "g_instructor_after", "solved")
+    submit(course, "h_added_grade_cells", "solved", edit=_add_grade_cells)
+    submit(course, "i_os_exit", "solved", edit=_exit_in_third_answer)
     code, out = run(["autograde", PS, "--create"], course)
     assert code == 0, out
     got = scores(course)
     assert got["a_instructor"] == got["g_instructor_after"] == (TOTAL, TOTAL)
+    # grading metadata the student added is dropped: graded, and only for the released cells
+    assert got["h_added_grade_cells"] == (TOTAL, TOTAL), got
+    added = autograded(course, "h_added_grade_cells").cells
+    assert any("GradingNote" in c.source and "free" in c.source for c in added)
+    # os._exit in the third answer: the checks before it keep their points, the rest 0 + note
+    _, solved = _notebook(course, "solved")
+    checks = [c.id for c in solved.cells if c.id.endswith("-check")]
+    assert got["i_os_exit"] == (_points_of_cells(solved, checks[:2]), TOTAL), got
+    died = json.dumps([c.get("outputs", []) for c in autograded(course, "i_os_exit").cells])
+    assert "kernel died" in died
     for student in ("b_blank", "c_redefine_check", "d_course_lib_folder", "e_snoop"):
         assert got[student] == (0, TOTAL), (student, got)
     # the malformed copy: 0 for the three broken grade cells, full marks for the rest
-    _, solved = _notebook(course, "solved")
-    checks = [c.id for c in solved.cells if c.id.endswith("-check")]
     assert got["f_malformed"] == (TOTAL - _points_of_cells(solved, checks[:3]), TOTAL)
     notes = [
         o.evalue
@@ -232,9 +269,38 @@ def test_slow_attacks(course):
     for student, prefix in attacks.items():
         submit(course, student, prefix=prefix)
     submit(course, "s_folder_solved_names", files=FOLDER, prefix=REDEFINE_CHECK)
+    submit(course, "s_output_flood", "solved", prefix=FLOOD)
     code, out = run(["autograde", PS, "--create"], course)
     assert code == 0, out
     got = scores(course)
     for student in (*attacks, "s_folder_solved_names"):
         assert got[student] == (0, TOTAL), (student, got)
     assert not Path("/tmp/forged").exists()
+    # 200 x 1 MB of stdout: graded as usual, and the autograded notebook stays small
+    assert got["s_output_flood"] == (TOTAL, TOTAL), got
+    (path,) = (course / "autograded" / "s_output_flood" / PS).glob("*.ipynb")
+    assert path.stat().st_size < 2_000_000, path.stat().st_size
+    assert "bytes of output cut" in path.read_text()
+
+
+FAKE_MATHJAX = "window.ROTATIONS_FAKE_MATHJAX = {a: {b: 1}}; // {{ not a template {% x %} {# #}\n"
+
+
+@pytest.mark.slow_grading
+def test_feedback_inlines_mathjax_instead_of_the_cdn(tmp_path):
+    """nbgrader's feedback template loaded MathJax 2.7.7 from a CDN: raw TeX offline."""
+    js = tmp_path / "tex-svg.js"
+    js.write_text(FAKE_MATHJAX)
+    root = tmp_path / "course"
+    write_course(root, mathjax=js)
+    code, out = run(["generate_assignment", PS, "--create"], root)
+    assert code == 0, out
+    submit(root, "a_instructor", "solved")
+    code, out = run(["autograde", PS, "--create"], root)
+    assert code == 0, out
+    code, out = run(["generate_feedback", PS], root)
+    assert code == 0, out
+    (page,) = (root / "feedback" / "a_instructor" / PS).glob("*.html")
+    html = page.read_text()
+    assert FAKE_MATHJAX.strip() in html and "window.MathJax = {tex:" in html
+    assert "cdnjs" not in html and "mathjax/2.7" not in html.lower()

@@ -1,0 +1,161 @@
+"""The confined kernel (grader/sandbox.py) from the inside, with the real ``bwrap``.
+
+Issue 17's sandbox escape: the kernel read the connection file of an unconfined kernel of the
+grading user (``--ro-bind / /``) and reached it over host loopback (no ``--unshare-net``), read
+other checkouts' ``tools/solutions``, classmates' submissions and ``/proc/1/environ``. One
+confined kernel is started (about 2 s) and probes what it can reach.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import os
+import shutil
+import socket
+import sys
+import threading
+from pathlib import Path
+
+import pytest
+from jupyter_core.paths import jupyter_runtime_dir
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+import course_lib  # noqa: E402
+from grader import sandbox  # noqa: E402
+
+MARKER = "ROTATIONS_GRADER_SECRET_7f3c"
+
+PROBE = """\
+import json, os, resource, socket, course_lib
+out = {"course_lib": course_lib.__file__, "uid": os.getuid()}
+def attempt(key, fn):
+    try:
+        out[key] = repr(fn())
+    except Exception as err:
+        out[key] = "refused " + type(err).__name__
+attempt("solutions", lambda: os.listdir(SOLUTIONS))
+attempt("repo_solutions", lambda: os.listdir(REPO_SOLUTIONS))
+attempt("connection", lambda: open(CONNECTION).read())
+attempt("exchange", lambda: os.listdir("/srv"))
+attempt("graders_runtime", lambda: os.listdir(GRADERS_RUNTIME))
+attempt("runtime", lambda: os.listdir(RUNTIME))
+attempt("environ1", lambda: open("/proc/1/environ", "rb").read().decode())
+attempt("environ", lambda: dict(os.environ))
+attempt("tcp", lambda: socket.create_connection(("127.0.0.1", PORT), timeout=2))
+attempt("write_root", lambda: open("/evil", "w"))
+attempt("write_lib", lambda: open(os.path.join(os.path.dirname(course_lib.__file__), "x"), "w"))
+out["as"] = resource.getrlimit(resource.RLIMIT_AS)[0]
+out["fsize"] = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
+print("PROBE" + json.dumps(out))
+"""
+
+
+async def _run_confined(code, hide):
+    km = sandbox.ConfinedKernelManager(hide=hide)
+    await km.start_kernel()
+    kc = km.client()
+    kc.start_channels()
+    texts = []
+    try:
+        await kc.wait_for_ready(timeout=60)
+        await kc.execute_interactive(
+            code,
+            output_hook=lambda m: texts.append(m["content"].get("text", "")),
+            timeout=60,
+        )
+    finally:
+        kc.stop_channels()
+        await km.shutdown_kernel(now=True)
+    return "".join(texts), km.scratch
+
+
+@pytest.fixture(scope="module")
+def probe(tmp_path_factory):
+    if shutil.which("bwrap") is None:
+        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
+    tmp = tmp_path_factory.mktemp("outside")
+    solutions = tmp / "other-checkout" / "tools" / "solutions"
+    solutions.mkdir(parents=True)
+    (solutions / "ch01.py").write_text("SOLUTIONS = {}\n")
+    runtime = tmp / "runtime"
+    runtime.mkdir()
+    connection = runtime / "kernel-outside.json"
+    connection.write_text(json.dumps({"key": "outside-kernel-key", "transport": "tcp"}))
+    server = socket.create_server(("127.0.0.1", 0))
+    server.settimeout(10)
+    accepted = []
+    thread = threading.Thread(target=lambda: _accept(server, accepted), daemon=True)
+    thread.start()
+    names = {
+        "SOLUTIONS": str(solutions),
+        "REPO_SOLUTIONS": str(ROOT / "tools" / "solutions"),
+        "CONNECTION": str(connection),
+        "RUNTIME": str(runtime),
+        "PORT": server.getsockname()[1],
+        "GRADERS_RUNTIME": jupyter_runtime_dir(),
+    }
+    code = "".join(f"{k} = {v!r}\n" for k, v in names.items()) + PROBE
+    os.environ[MARKER] = "grader-only"
+    try:
+        text, scratch = asyncio.run(_run_confined(code, [str(ROOT), str(tmp)]))
+    finally:
+        del os.environ[MARKER]
+        server.close()
+        thread.join(5)
+    line = next(x for x in text.splitlines() if x.startswith("PROBE"))
+    return json.loads(line[len("PROBE") :]), accepted, scratch
+
+
+def _accept(server, accepted):
+    try:
+        accepted.append(server.accept())
+    except OSError:
+        pass
+
+
+def test_other_checkouts_solutions_and_the_repository_are_not_in_the_kernels_view(probe):
+    out, _, _ = probe
+    assert out["solutions"] == "refused FileNotFoundError", out
+    assert out["repo_solutions"] == "refused FileNotFoundError", out
+    assert out["exchange"] == "refused FileNotFoundError", out  # nbgrader's exchange
+
+
+def test_the_grading_users_jupyter_runtime_folder_is_not_in_the_kernels_view(probe):
+    out, _, _ = probe
+    assert out["graders_runtime"] == "refused FileNotFoundError", out
+
+
+def test_no_tcp_to_the_hosts_loopback(probe):
+    out, accepted, _ = probe
+    assert out["tcp"].startswith("refused "), out
+    assert not accepted
+
+
+def test_the_graders_environment_is_not_in_proc_1_or_the_kernel(probe):
+    out, _, _ = probe
+    assert MARKER not in out["environ1"] and MARKER not in out["environ"], out
+    assert out["environ1"] != "refused FileNotFoundError"  # /proc is the sandbox's own
+
+
+def test_a_connection_file_of_an_outside_kernel_cannot_be_read(probe):
+    out, _, _ = probe
+    assert out["connection"] == "refused FileNotFoundError", out
+    assert out["runtime"] == "refused FileNotFoundError", out
+
+
+def test_the_installed_course_lib_is_imported_read_only_and_limits_hold(probe):
+    out, _, scratch = probe
+    assert out["course_lib"] == course_lib.__file__
+    assert out["write_root"].startswith("refused ") and out["write_lib"].startswith("refused ")
+    assert out["as"] == sandbox.LIMITS["RLIMIT_AS"]
+    assert out["fsize"] == sandbox.LIMITS["RLIMIT_FSIZE"]
+    assert not os.path.exists(scratch)  # the kernel's scratch folder is removed with it
+
+
+def test_exposing_a_folder_that_holds_a_hidden_one_is_refused():
+    km = sandbox.ConfinedKernelManager(hide=[sys.prefix + "/lib"])
+    with pytest.raises(ValueError, match="holds hidden"):
+        km._expose()
+    shutil.rmtree(km.scratch)

@@ -32,6 +32,9 @@ myst_enable_extensions = ["dollarmath", "amsmath"]
 suppress_warnings = ["mystnb.unknown_mime_type"]
 
 
+FOLDED = ("Going deeper", "Errata")  # the headings the chapters fold in JupyterLab
+
+
 def _fold_going_deeper(app, pagename, templatename, context, doctree):
     """Fold every "Going deeper" part of a page, as JupyterLab folds it in the notebook.
 
@@ -39,17 +42,17 @@ def _fold_going_deeper(app, pagename, templatename, context, doctree):
     hiding everything up to the next heading of the same or a higher level. Sphinx puts exactly
     that span in one ``<section>``, whose id comes from the heading ("going-deeper-..."): the
     heading becomes the ``<summary>`` of a closed ``<details class="going-deeper">`` holding the
-    rest of the section.
+    rest of the section (found by its heading's text: a title used twice gets an id "idN").
     """
     body = context.get("body") or ""
-    if 'id="going-deeper' not in body:
+    if not any(word in body for word in FOLDED):
         return
     from bs4 import BeautifulSoup  # installed with nbconvert
 
     soup = BeautifulSoup(body, "html.parser")
-    for section in soup.find_all("section", id=lambda i: bool(i) and i.startswith("going-deeper")):
+    for section in soup.find_all("section"):  # by its heading: a repeated title gets id="idN"
         heading = section.find(["h2", "h3", "h4", "h5", "h6"], recursive=False)
-        if heading is None:
+        if heading is None or not heading.get_text().startswith(FOLDED):
             continue
         details = soup.new_tag("details", attrs={"class": "going-deeper"})
         summary = soup.new_tag("summary")

@@ -81,10 +81,10 @@ $$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
 \tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\
 -\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
 Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
-$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and $\alpha, \gamma \in
-[-\pi, \pi]$. Multiply out the product for general angles, read the angles off the entries (as
-the chapter did for roll, pitch and yaw in §2) and give the 3-vector $(\alpha, \beta, \gamma)$
-in radians.
+$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and
+$\alpha, \gamma \in [-\pi, \pi]$. Multiply out the product for general angles, read the angles
+off the entries (as the chapter did for roll, pitch and yaw in §2) and give the 3-vector
+$(\alpha, \beta, \gamma)$ in radians.
 """,
         answer=Value(shape=(3,), angle=True),
         tip="Write out R_z(α) R_y(β) R_z(γ) first (sympy helps). Look for the row and the "

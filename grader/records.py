@@ -35,6 +35,8 @@ from sympy.matrices.expressions import (
     ZeroMatrix,
 )
 
+from course_lib.exercises._reading import _FUNCTIONS as ANSWER_FUNCTIONS
+
 __all__ = ["Unreadable", "parse", "CONSTRUCTORS"]
 
 MAX_TEXT = 200_000
@@ -45,23 +47,8 @@ MAX_EXPONENT = 64
 MAX_NAME = 40
 MAX_BITS = 20_000  # of any exact number built, about 6,000 digits
 
-_FUNCTIONS = {
-    f.__name__: f
-    for f in (
-        sp.sin,
-        sp.cos,
-        sp.tan,
-        sp.exp,
-        sp.log,
-        sp.asin,
-        sp.acos,
-        sp.atan,
-        sp.atan2,
-        sp.sinh,
-        sp.cosh,
-        sp.tanh,
-    )
-}
+# The elementary functions of the answer language: the checker's own list, read in once.
+_FUNCTIONS = {f.__name__: f for f in ANSWER_FUNCTIONS}
 #: The names a record may call, and what they build.
 CONSTRUCTORS = {
     "Add": sp.Add,

@@ -102,9 +102,10 @@ def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
     cmd = [shutil.which("bwrap") or "bwrap", "--unshare-all", "--hostname", "grading"]
     cmd += ["--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv"]
     cmd += _system()
+    cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMP_BYTES), "--tmpfs", "/tmp"]
+    # after the tmpfs: a venv or checkout that lives under /tmp (a CI clone) stays visible
     for folder in expose:
         cmd += ["--ro-bind", folder, folder]
-    cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMP_BYTES), "--tmpfs", "/tmp"]
     cmd += ["--bind", str(scratch), str(scratch), "--dir", SCRATCH, "--chdir", SCRATCH]
     cmd += ["--remount-ro", "/"]
     for key, value in kernel_env(path).items():

@@ -159,3 +159,14 @@ def test_exposing_a_folder_that_holds_a_hidden_one_is_refused():
     with pytest.raises(ValueError, match="holds hidden"):
         km._expose()
     shutil.rmtree(km.scratch)
+
+
+def test_regression_a_venv_under_tmp_is_mounted_over_the_sandboxs_own_tmp():
+    """A CI clone under /tmp: its venv and course_lib were bound before the kernel's tmpfs /tmp,
+    which then hid them, and every confined kernel died before replying (found in a CI dry run)."""
+    cmd = sandbox.bwrap_command(
+        ["/tmp/clone/.venv", "/tmp/clone/course_lib"], "/tmp/s", ["-f", "x"]
+    )
+    tmpfs = max(i for i, a in enumerate(cmd) if a == "--tmpfs" and cmd[i + 1] == "/tmp")
+    binds = [i for i, a in enumerate(cmd) if a == "--ro-bind" and cmd[i + 1].startswith("/tmp/")]
+    assert binds and all(i > tmpfs for i in binds)

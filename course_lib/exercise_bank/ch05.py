@@ -77,9 +77,11 @@ orientation, with $w > 0$. Give a 4-vector.
         title="Proper Euler angles of a rotation",
         statement=r"""
 A camera mount reports its orientation as the rotation matrix
+
 $$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
 \tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\
 -\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
+
 Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
 $R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and
 $\alpha, \gamma \in [-\pi, \pi]$. Multiply out the product for general angles, read the angles

@@ -33,6 +33,7 @@ from course_lib.interactive import (  # noqa: E402
     VIEW_ELEV,
     draw_rodrigues_terms,
     draw_rotated_frame,
+    gimbal_explorer,
     rodrigues_explorer,
     rodrigues_readout,
     rotation_explorer,
@@ -398,7 +399,9 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
     import ipywidgets
 
     widget = make()
-    Canvas, _ = interactive._ipympl_classes()  # (a plain `import ipympl` switches the backend)
+    Canvas, _ = (
+        interactive.widgets._ipympl_classes()
+    )  # (a plain `import ipympl` switches the backend)
     assert list(widget.sliders) == SLIDERS
     for slider, (lo, hi) in zip(widget.sliders.values(), (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)):
         assert (slider.min, slider.max) == (lo, hi)
@@ -715,12 +718,12 @@ def test_spin_animation_refuses_bad_sizes():
 # --------------------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer])
+@pytest.mark.parametrize("make", [rotation_explorer, rodrigues_explorer, gimbal_explorer])
 def test_explorer_without_ipympl_falls_back_to_its_still_picture_with_one_line(make, monkeypatch):
     def missing():
         raise ModuleNotFoundError("No module named 'ipympl'", name="ipympl")
 
-    monkeypatch.setattr(interactive, "_ipympl_classes", missing)
+    monkeypatch.setattr(interactive.widgets, "_ipympl_classes", missing)
     explorer = make()
     assert not explorer.live and explorer.children == ()
     bundle = explorer._repr_mimebundle_()

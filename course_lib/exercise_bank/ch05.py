@@ -83,21 +83,24 @@ $$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
 -\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
 
 Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
-$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$, with $\beta \in [0, \pi]$ and
-$\alpha, \gamma \in [-\pi, \pi]$. Multiply out the product for general angles, read the angles
-off the entries (as the chapter did for roll, pitch and yaw in §2) and give the 3-vector
-$(\alpha, \beta, \gamma)$ in radians.
+$R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$. Like the roll, pitch and yaw of the chapter's §2,
+every such $R$ with $\sin\beta \ne 0$ has two triples: one with $\beta \in (0, \pi)$ and one
+with $\beta \in (-\pi, 0)$. Multiply out the product for general angles, read the angles off
+the entries, and give the triple with $\beta \in [-\pi, 0]$ and $\alpha, \gamma \in [-\pi, \pi]$:
+the 3-vector $(\alpha, \beta, \gamma)$ in radians.
 """,
         answer=Value(shape=(3,), angle=True),
         tip="Write out R_z(α) R_y(β) R_z(γ) first (sympy helps). Look for the row and the "
-        "column in which only two of the three angles appear, and use atan2 with both of "
-        "its arguments, so that the signs pick the quadrant.",
+        "column in which only two of the three angles appear. atan2 reads the quadrant from "
+        "the signs of both its arguments: here sin β < 0, so mind the sign each entry gets.",
         mistakes={
             "reversed": "the order asked for is (α, β, γ), the order of the turns.",
             "gamma_sign": "check the sign of the entry you use for cos γ: in the product it "
-            "comes with a minus sign.",
-            "negative_beta": "that triple rebuilds R too, but its β is negative; the "
-            "statement asks for β in [0, π].",
+            "comes as −sin β cos γ, and here sin β < 0.",
+            "positive_beta": "that triple rebuilds R too, but its β is positive; the "
+            "statement asks for the one with β in [−π, 0].",
+            "beta_only": "negating β alone gives another rotation (rebuild R from your triple "
+            "to see it): with sin β < 0 the entries you read α and γ from change sign too.",
         },
     ),
     Exercise(
@@ -167,16 +170,20 @@ $\dot R = \hat\omega R$.
         level="challenge",
         title="How far apart are two orientations?",
         statement=r"""
-Two orientations are given by the unit quaternions $q_0 = (0.6, 0.8, 0, 0)$ and
-$q_1 = (-0.8, 0, 0, 0.6)$. Find the angle $\theta \in [0, \pi]$ of the rotation that takes the
-first to the second, $R_0^TR_1$, in radians. Give a number.
+Two orientations arrive from two sources: $q_0 = (0.6, 0.8, 0, 0)$ from `course_lib`
+(scalar first), and $q_1$ as a ROS message, `x: 0.0, y: 0.0, z: 0.6, w: -0.8`. Find the angle
+$\theta \in [0, \pi]$ of the rotation that takes the first orientation to the second,
+$R_0^TR_1$, in radians. Give a number.
 """,
         answer=Value(angle=True),
-        tip="The relative rotation is q₀* q₁, and its scalar part is q₀ · q₁ = cos θ/2 up to "
-        "a sign.",
+        tip="Put both in one order first. Which quaternion takes the first orientation to the "
+        "second, what does its scalar part tell about its angle, and what does the double "
+        "cover change?",
         mistakes={
-            "long_way": "q and −q are the same rotation: take the absolute value of q₀ · q₁ "
-            "to get the shorter angle.",
+            "long_way": "q and −q are the same rotation: of the two angles your formula can "
+            "give, the statement asks for the one in [0, π].",
+            "scalar_last": "q₁ came as a ROS message, scalar last: put it in the order "
+            "(w, x, y, z) before computing with it.",
         },
     ),
 ]

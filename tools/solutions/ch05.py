@@ -20,11 +20,12 @@ R = sp.Matrix(
         [-sp.Rational(3, 4), sp.sqrt(3) / 4, -sp.Rational(1, 2)],
     ]
 )
-# R_z(α) R_y(β) R_z(γ): third column (cα sβ, sα sβ, cβ), third row (−sβ cγ, sβ sγ, cβ)
-alpha = sp.atan2(R[1, 2], R[0, 2])
-beta = sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
-gamma = sp.atan2(R[2, 1], -R[2, 0])
-answer_proper_euler_angles = [alpha, beta, gamma]  # (−π/2, 2π/3, π/6)""",
+# R_z(α) R_y(β) R_z(γ): third column (cα sβ, sα sβ, cβ), third row (−sβ cγ, sβ sγ, cβ);
+# with sin β < 0 the entries divided by sin β change sign
+alpha = sp.atan2(-R[1, 2], -R[0, 2])
+beta = -sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
+gamma = sp.atan2(-R[2, 1], R[2, 0])
+answer_proper_euler_angles = [alpha, beta, gamma]  # (π/2, −2π/3, −5π/6)""",
     "unreachable_omega": """\
 phi = sp.pi / 6  # roll 30°, pitch 90°, yaw 0
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
@@ -40,7 +41,9 @@ R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
 T = 3.0
 answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world: (0, 0, 2π/9)""",
     "angle_between_quaternions": """\
-q0, q1 = np.array([0.6, 0.8, 0, 0]), np.array([-0.8, 0, 0, 0.6])
+q0 = np.array([0.6, 0.8, 0, 0])
+x, y, z, w = 0.0, 0.0, 0.6, -0.8  # the ROS message, scalar last
+q1 = np.array([w, x, y, z])
 answer_angle_between_quaternions = 2 * np.arccos(abs(q0 @ q1))""",
 }
 
@@ -58,8 +61,9 @@ MISTAKES = {
     },
     "proper_euler_angles": {
         "reversed": "[gamma, beta, alpha]",
-        "gamma_sign": "[alpha, beta, sp.atan2(R[2, 1], R[2, 0])]",
-        "negative_beta": "[alpha + sp.pi, -beta, gamma - sp.pi]",
+        "gamma_sign": "[alpha, beta, sp.atan2(-R[2, 1], -R[2, 0])]",
+        "positive_beta": "[sp.atan2(R[1, 2], R[0, 2]), -beta, sp.atan2(R[2, 1], -R[2, 0])]",
+        "beta_only": "[sp.atan2(R[1, 2], R[0, 2]), beta, sp.atan2(R[2, 1], -R[2, 0])]",
     },
     "unreachable_omega": {
         "world_frame": "[1, 0, 0]  # normal of e_z, R_z(0) e_y, R_y(90°) e_x",
@@ -74,5 +78,8 @@ MISTAKES = {
         "long_way": "(lambda q: q[1:] / np.linalg.norm(q[1:]) * 2 * np.arccos(q[0]) / T)("
         "quaternion.multiply(q1, quaternion.conjugate(q0)))",
     },
-    "angle_between_quaternions": {"long_way": "2 * np.arccos(q0 @ q1)"},
+    "angle_between_quaternions": {
+        "long_way": "2 * np.arccos(q0 @ q1)",
+        "scalar_last": "2 * np.arccos(abs(q0 @ np.array([x, y, z, w])))",
+    },
 }

@@ -1,5 +1,6 @@
 # Two commands do all set-up:  `make lab` opens the course, `make test` passes the tests.
-# Both build .venv from environment.txt when it is missing or older than environment.txt.
+# Both build .venv from environment.txt (and environment-student.txt, which it includes) when it is
+# missing or older than either.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -8,7 +9,7 @@ STAMP  := $(VENV)/.course-installed
 
 .PHONY: lab test e2e student bench lint clean test-fast notebooks exercises site site-test
 
-$(STAMP): environment.txt pyproject.toml
+$(STAMP): environment.txt environment-student.txt pyproject.toml
 	rm -rf $(VENV)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip

@@ -161,7 +161,9 @@ def finish(nb):
     for i, cell in enumerate(nb.cells):
         outputs = []
         for output in cell.get("outputs", []):
-            if nbtool.WIDGET_VIEW in output.get("data", {}):
+            if nbtool.WIDGET_VIEW in output.get("data", {}) or output.get("metadata", {}).get(
+                nbtool.EXPLORER_STILL
+            ):
                 outputs += _still(output)
             else:
                 outputs.append(output)

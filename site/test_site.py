@@ -61,6 +61,13 @@ def solution_lines():
     return lines - elsewhere
 
 
+EXPLORER_STILLS = {  # chapter: its explorers
+    "02_rotations": 1,
+    "03_exponential_coordinates": 1,
+    "05_orientation_in_practice": 1,
+}
+
+
 def image_outputs(chapter):
     """(image outputs, explorer stills) of the executed notebook the page was made from."""
     nb = json.loads((EXECUTED / f"{chapter}.ipynb").read_text(encoding="utf-8"))
@@ -190,7 +197,7 @@ def test_every_figure_of_the_chapter_is_on_its_page(visit, chapter):
     assert all(alt for _, alt in shown) and all(alt != "Figure" for _, alt in shown[:3])
     notes = page.inner_text("div.body").count("A still picture of the explorer")
     assert notes == stills
-    explorers = {"02_rotations": 1, "03_exponential_coordinates": 1}.get(chapter, 0)
+    explorers = EXPLORER_STILLS.get(chapter, 0)
     assert stills >= explorers, f"{chapter}: the explorer's still picture is missing"
 
 

@@ -75,12 +75,15 @@ def test_setup_cell_is_short_and_readable():
     assert max(len(line) for line in lines) <= 100
 
 
-def test_no_widget_state_and_no_widget_model_ids(chapter):
+def test_regression_no_widget_state_and_no_widget_view_that_would_hide_the_still(chapter):
+    # A stored view (even with an empty model id) is what a trusted notebook shows instead of
+    # the PNG, and JupyterLab hides a view whose model is gone: the explorer showed nothing.
     nb = _read(chapter)
     assert "widgets" not in nb.metadata
     for i, output in _outputs(nb):
-        view = output.get("data", {}).get(nbtool.WIDGET_VIEW)
-        assert view is None or view["model_id"] == "", f"{chapter.name} cell {i}: model id stored"
+        assert nbtool.WIDGET_VIEW not in output.get("data", {}), f"{chapter.name} cell {i}"
+        if output.get("metadata", {}).get(nbtool.EXPLORER_STILL):
+            assert "image/png" in output["data"] and "explorer" in output["data"]["text/plain"]
 
 
 def test_no_execution_timestamps(chapter):
@@ -324,7 +327,7 @@ def test_put_setup_cell_replaces_an_old_copy():
     assert nb.cells[0].source == nbtool.setup_source("https://github.com/example/c")
 
 
-def test_clean_strips_widget_state_timestamps_and_model_ids():
+def test_clean_strips_widget_state_timestamps_and_widget_views():
     cell = nbformat.v4.new_code_cell("w")
     cell.metadata["execution"] = {"iopub.status.idle": "2026-01-01T00:00:00Z"}
     cell.outputs = [
@@ -339,7 +342,8 @@ def test_clean_strips_widget_state_timestamps_and_model_ids():
     nb = nbformat.v4.new_notebook(cells=[cell], metadata={"widgets": {"state": {}}})
     nbtool.clean(nb)
     assert "widgets" not in nb.metadata and "execution" not in cell.metadata
-    assert cell.outputs[0]["data"][nbtool.WIDGET_VIEW]["model_id"] == ""
+    assert nbtool.WIDGET_VIEW not in cell.outputs[0]["data"]
+    assert cell.outputs[0]["metadata"][nbtool.EXPLORER_STILL] is True
 
 
 @pytest.mark.notebook_exec

@@ -45,6 +45,8 @@ from course_links import repository_url  # noqa: E402
 
 SETUP_ID = "course-setup"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+#: Output metadata key of an explorer's stored still picture (its widget view removed).
+EXPLORER_STILL = "explorer_still"
 PNG_COLOURS = 128
 CELL_TIMEOUT = 300  # seconds; a safety net, never reached (chapters take well under 60 s)
 _UUID_HEX = re.compile(r"(?<![0-9a-f])[0-9a-f]{32}(?![0-9a-f])")
@@ -148,8 +150,11 @@ def _stable_ids(html, salt):
 def clean_output(output, cell_id):
     data = output.get("data", {})
     if WIDGET_VIEW in data:
-        # Views of widgets whose state is not stored: JupyterLab hides a view with an empty id.
-        data[WIDGET_VIEW] = {**data[WIDGET_VIEW], "model_id": ""}
+        # A view of a widget whose state is not stored can show nothing: JupyterLab prefers the
+        # view to the PNG in a trusted notebook, and hides a view whose model is gone. The view
+        # goes; the explorer's still PNG and its description stay, marked for the website.
+        del data[WIDGET_VIEW]
+        output.setdefault("metadata", {})[EXPLORER_STILL] = True
     if "image/png" in data:
         data["image/png"] = small_png(data["image/png"])
     if "text/html" in data:

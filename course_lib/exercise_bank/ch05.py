@@ -42,7 +42,8 @@ turn about the $z$ axis. By what angle $\theta$, in radians, between $0$ and $\p
 number.
 """,
         answer=Value(angle=True),
-        tip="w = cos θ/2 and z = sin θ/2 for a turn about z; atan2 gives the half angle.",
+        tip="Put the four numbers in this course's order first, then use what §4 says the "
+        "scalar part of a turn's quaternion is.",
         mistakes={
             "scalar_first": "ROS writes the scalar last: w = 0.8 is the fourth number, "
             "not the first.",

@@ -13,7 +13,7 @@ import urllib.parse
 from pathlib import Path
 
 from common import POLL, ROOT, CheckFailed, KernelStalled, js, log, poll
-from view_checks import check_folds, check_players, outside_requests
+from view_checks import check_folds, check_players, check_stills, outside_requests
 from widget_checks import check_widgets
 
 VIEWPORT = {"width": 1280, "height": 900}
@@ -297,12 +297,13 @@ def open_and_run(page, server, rel_path, problems, timeout, expect_folds=False):
     t1 = time.monotonic()
     opened = page.evaluate(js("state"))
     n_players = check_players(page, opened, problems, "on opening, before any cell runs")
+    n_stills = check_stills(page, opened, problems)
     n_folds = check_folds(page, problems)
     if expect_folds and not n_folds:
         problems.append("no folded heading found in a notebook made to have folds")
     log(
-        f"  opened in {t1 - t0:.1f} s; checked {n_players} animation player(s) and {n_folds} "
-        f"folded heading(s) in {time.monotonic() - t1:.1f} s"
+        f"  opened in {t1 - t0:.1f} s; checked {n_players} animation player(s), {n_stills} "
+        f"explorer still(s) and {n_folds} folded heading(s) in {time.monotonic() - t1:.1f} s"
     )
     t0 = time.monotonic()
     page.evaluate(js("run_all"))

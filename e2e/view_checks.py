@@ -1,8 +1,10 @@
 """Checks of what a student sees beyond the outputs of a run: the animation player's first
-frame (also on opening, before any cell runs), the folded "Going deeper" headings, and that no
+frame (also on opening, before any cell runs), the explorers' stored still pictures on
+opening, the folded "Going deeper" headings, and that no
 request of the page leaves the loopback server.
 
-``check_players(page, state, problems, when)``, ``check_folds(page, problems)`` and
+``check_players(page, state, problems, when)``, ``check_stills(page, state, problems)``,
+``check_folds(page, problems)`` and
 ``outside_requests(urls)`` are called by :mod:`notebook_checks`.
 """
 
@@ -17,6 +19,8 @@ NETWORK_SCHEMES = {"http", "https", "ws", "wss", "ftp"}
 # The call that makes the animation player (matplotlib's JavaScript player, "jshtml").
 PLAYER_CALL = "spin_animation("
 PLAYER_SECONDS = 15
+# The explorers' cells: on opening, before any cell runs, their stored still picture shows.
+EXPLORER_CALL = "_explorer("
 
 
 def outside_requests(urls):
@@ -55,6 +59,29 @@ def check_players(page, state, problems, when):
                 break
             time.sleep(POLL)
         problems.extend(f"{p} ({when})" for p in found)
+    return n
+
+
+def check_stills(page, state, problems):
+    """On opening, every explorer cell shows its stored still picture (a loaded image), as a
+    fresh copy of the course opens: untrusted. (The stored form that a *trusted* notebook would
+    hide, a widget view without its model, is refused by tests/test_notebook_hygiene.py.)
+    Returns how many stills were looked at.
+    """
+    n = 0
+    for i, cell in enumerate(state["cells"]):
+        if cell["type"] != "code" or EXPLORER_CALL not in cell["source"]:
+            continue
+        n += 1
+        page.evaluate(js("scroll_to_cell"), i)
+        deadline = time.monotonic() + PLAYER_SECONDS
+        while True:
+            shown = page.evaluate(js("dom"), [i])["cells"][0]["outputs"]
+            if any(o["loaded"] for o in shown) or time.monotonic() > deadline:
+                break
+            time.sleep(POLL)
+        if not any(o["loaded"] for o in shown):
+            problems.append(f"cell {i}: the explorer's still picture is not shown on opening")
     return n
 
 

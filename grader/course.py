@@ -59,9 +59,13 @@ import os as _os
 
 import nbgrader as _nbgrader
 
+from grader.pages import FeedbackExporter
+
 _formgrader = _os.path.join(_os.path.dirname(_nbgrader.__file__), "server_extensions", "formgrader")
-c.HTMLExporter.template_name = {name!r}
-c.HTMLExporter.extra_template_basedirs = [
+# On the feedback's exporter only: the formgrader's HTMLExporter keeps nbgrader's own template.
+c.GenerateFeedback.exporter_class = FeedbackExporter
+c.FeedbackExporter.template_name = {name!r}
+c.FeedbackExporter.extra_template_basedirs = [
     {templates!r},
     _os.path.join(_formgrader, "templates"),
 ]
@@ -88,6 +92,7 @@ from nbgrader.preprocessors import (
 )
 
 from grader.preprocessor import CapOutput, ConfinedExecute, GuardCells, VerifyRecords
+from grader.pages import InertStudentHTML
 
 c = get_config()  # noqa: F821
 c.CourseDirectory.root = {root!r}
@@ -107,6 +112,7 @@ c.Autograde.autograde_preprocessors = [
     ConfinedExecute,
     VerifyRecords,
     CapOutput,
+    InertStudentHTML,  # the student's markdown and raw HTML as text (grader/pages.py)
     IgnorePattern,
     ClearMetadataPreprocessor,
     LimitOutput,
@@ -118,6 +124,11 @@ c.Execute.timeout = {timeout}  # seconds per cell
 c.ConfinedKernelManager.hide = {hide!r}
 c.CapOutput.max_bytes = 100_000  # output text kept per cell (autograded notebook, feedback)
 c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on one whole line
+# Wherever nbgrader renders a submission as HTML (the formgrader page the instructor opens, the
+# feedback pages), the HTML of its outputs is sanitized (and InertStudentHTML above makes the
+# student's markdown and raw HTML text): a student's <script> would run in the instructor's
+# logged-in browser and could set its own grades through the formgrader's API.
+c.HTMLExporter.sanitize_html = True
 """
 
 

@@ -71,8 +71,8 @@ in `W`.
         answer=Expr(shape=(3, 3), domain=_W, allowed=(W, *_W), matrix_degree=2),
         tip="For a general ω, ω̂³ = ω̂ω̂² with ω̂² = ωωᵀ − ‖ω‖²I (eq. 140 before ‖ω‖ = 1).",
         mistakes={
-            "unit": "that holds for a unit ω only; for a general one ω̂³ = −‖ω‖² ω̂, "
-            "and the factor ‖ω‖² comes back at every second power."
+            "unit": "that holds for a unit ω only: redo ω̂³ for a general ω (what does "
+            "ωᵀω equal when ‖ω‖ ≠ 1?) and follow that factor through the higher powers."
         },
     ),
     Exercise(
@@ -87,7 +87,8 @@ $e^{\hat\omega\pi}$ in terms of `u`, a 3x1 `MatrixSymbol` standing for $\omega$,
 identity (`sp.Identity(3)` or `sp.eye(3)`); no hat. Give a 3x3 matrix expression.
 """,
         answer=Expr(shape=(3, 3), domain=_W, allowed=(u,), unit_omega=True, matrix_degree=2),
-        tip="At θ = π, sin θ = 0 and 1 − cos θ = 2; then use ω̂² = ωωᵀ − I for a unit ω.",
+        tip="Evaluate the two coefficients of (159) at θ = π first; then write ω̂² without a "
+        "hat, using (140) for a unit ω.",
         mistakes={
             "mirror": "that matrix has det −1 (a mirror, not a rotation): check the sign of the "
             "ω̂² term of Rodrigues' formula at θ = π.",
@@ -125,7 +126,7 @@ $(0, 2)$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then fi
 smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
         answer=Value(shape=(2,)),
-        tip="The solution is x(t) = e^{At} x(0), the matrix form of (106); compute A² and "
+        tip="The solution is x(t) = e^{At} x(0), the matrix exponential of §4; compute A² and "
         "sort the series of e^{At} into even and odd powers. Then impose the condition at t = 1.",
         mistakes={
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
@@ -151,7 +152,8 @@ degree at most 2 in `W` (standing for $\hat\omega$), e.g.
 `sp.eye(3) + c1 * W + c2 * W**2` with your α and β as `c1` and `c2`.
 """,
         answer=Expr(shape=(3, 3), domain=(*_W, theta), allowed=(W, theta, *_W), matrix_degree=2),
-        tip="Write ω = ‖ω‖ n with a unit n: then ω̂θ = n̂ (‖ω‖θ).",
+        tip="Rodrigues' formula (159) needs a unit axis: which unit axis and which angle "
+        "give the same exponent ω̂θ?",
         mistakes={
             "unit": "that is Rodrigues' formula for a unit axis; here ω̂³ = −‖ω‖² ω̂, "
             "so redo the regrouping of the series with that factor."
@@ -171,7 +173,7 @@ $\hat\omega$. Here $\omega$ changes with $t$, so $R(t)$ is not $e^{\hat\omega t}
 $\omega(t)$; give a 3-vector in `t`.
 """,
         answer=Expr(shape=(3,), domain=(t,)),
-        tip="Ṙ = Ṙ_x R_z + R_x Ṙ_z; then R_x ẑ R_xᵀ is the hat of R_x e₃ (Proposition 6).",
+        tip="Ṙ = Ṙ_x R_z + R_x Ṙ_z; then R_x ê₃ R_xᵀ is the hat of R_x e₃ (Proposition 6).",
         mistakes={
             "body": "that is the body angular velocity (RᵀṘ = ω̂_b); the exercise asks for ṘRᵀ.",
             "sum": "the z axis is turned by the first rotation: the second term is the hat of "

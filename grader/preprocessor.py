@@ -22,11 +22,14 @@
 from __future__ import annotations
 
 import json
+import math
 
 import nbformat
-from nbclient.exceptions import DeadKernelError
+from jupyter_core.utils import run_sync
+from nbclient.exceptions import CellTimeoutError, DeadKernelError
 from nbgrader import utils
 from nbgrader.api import Gradebook, MissingEntry
+from nbgrader.nbgraderformat.v3 import MetadataValidatorV3
 from nbgrader.preprocessors import Execute, NbGraderPreprocessor
 from traitlets import Integer
 
@@ -50,27 +53,118 @@ def note_output(note):
 
 
 class ConfinedExecute(Execute):
-    """nbgrader's Execute with the confined kernel (:mod:`grader.sandbox`)."""
+    """nbgrader's Execute with the confined kernel (:mod:`grader.sandbox`).
+
+    Output is capped **while it arrives** (:meth:`process_message`): at most
+    :attr:`max_output_bytes` of a cell's output messages reach the notebook held in the
+    grader's memory, then one note line; the first errors are always kept, shortened, so a cut
+    never turns a failed grade cell into a passed one. (Capping after execution, as
+    :class:`CapOutput` does, let 20 s of flushed 1 MB writes hold 1.5 GB in the grader.)
+
+    A kernel that dies, or that does not stop at the interrupt after a cell's timeout (SIGINT
+    ignored), ends the run: the cells that ran keep their outputs, the cell that hung gets an
+    error note, every grade cell that did not run gets 0 with a note; the student is graded.
+    """
+
+    max_output_bytes = Integer(
+        100_000, help="Output bytes (JSON text of the messages) kept per cell while it runs."
+    ).tag(config=True)
 
     def __init__(self, *args, **kwargs):
         kwargs["kernel_manager_class"] = ConfinedKernelManager
         super().__init__(*args, **kwargs)
+        self._start_cell(None)
+
+    def _start_cell(self, index):
+        self._running, self._budget, self._cut = index, self.max_output_bytes - NOTE_ROOM, 0
+        self._errors = self._stderr = 0
 
     def preprocess(self, nb, resources=None, km=None):
+        self._start_cell(None)
         try:
             return super().preprocess(nb, resources, km=km)
         except DeadKernelError:
             self.log.warning("the kernel died: grade cells that did not run get 0")
+            why = "the kernel died (os._exit, a crash or the memory limit) before this cell ran."
+        except CellTimeoutError:
+            self.log.warning("a cell timed out and the kernel did not stop: it was killed")
+            why = HUNG
+            if self._running is not None:
+                cell = nb.cells[self._running]
+                gid = _grade_id(cell) or f"cell {self._running}"
+                note = f"{gid}: {HUNG_HERE}"
+                cell.outputs = [*cell.get("outputs", []), note_output(note)]
+                if utils.is_grade(cell):
+                    cell.metadata[ZERO] = f"{gid}: 0 points: {HUNG_HERE}"
         for cell in nb.cells:
             if cell.cell_type == "code" and utils.is_grade(cell) and cell.execution_count is None:
-                gid = cell.metadata.nbgrader.get("grade_id", "")
-                note = (
-                    f"{gid}: 0 points: the kernel died (os._exit, a crash or the memory limit) "
-                    "before this cell ran."
-                )
+                note = f"{_grade_id(cell)}: 0 points: {why}"
                 cell.outputs = [note_output(note)]
                 cell.metadata[ZERO] = note  # VerifyRecords keeps this note
         return nb, resources
+
+    async def async_execute_cell(self, cell, cell_index, execution_count=None, store_history=True):
+        self._start_cell(cell_index)
+        try:
+            return await super().async_execute_cell(
+                cell, cell_index, execution_count=execution_count, store_history=store_history
+            )
+        finally:
+            if self._cut:
+                note = (
+                    f"\n[GradingNote: {self._cut} bytes of output cut while the cell ran, "
+                    f"over {self.max_output_bytes} per cell]\n"
+                )
+                cell.outputs.append(nbformat.v4.new_output("stream", name="stdout", text=note))
+
+    execute_cell = run_sync(async_execute_cell)
+
+    def process_message(self, msg, cell, cell_index):
+        kind = msg.get("msg_type", "")
+        if kind in OUTPUT_MESSAGES or kind.startswith("comm"):
+            content = msg.get("content", {})
+            size = max(100, len(json.dumps(content, default=str)))
+            size += sum(len(b) for b in msg.get("buffers") or ())
+            if kind == "error":
+                self._errors += 1
+                if self._errors > 3 and size > self._budget:
+                    self._cut += size
+                    return None
+                msg = {**msg, "content": _short_error(content)}
+                size = min(size, 12_000)
+            elif size > self._budget:
+                self._cut += size
+                stderr = kind == "stream" and content.get("name") == "stderr"
+                if kind == "stream" and (self._budget > 0 or (stderr and not self._stderr)):
+                    keep = max(self._budget, 200)
+                    text = str(content.get("text", ""))[:keep]
+                    msg = {**msg, "content": {**content, "text": text}}
+                    self._cut -= len(text)
+                    self._stderr += stderr
+                    self._budget = 0
+                    return super().process_message(msg, cell, cell_index)
+                self._budget = 0
+                return None
+            self._budget = max(0, self._budget - size)
+        return super().process_message(msg, cell, cell_index)
+
+
+#: Messages that become outputs (or update them) in the grader's copy of the notebook.
+OUTPUT_MESSAGES = {"stream", "display_data", "execute_result", "update_display_data", "error"}
+NOTE_ROOM = 200  # so CapOutput, after, never cuts again what ConfinedExecute kept
+HUNG = (
+    "an earlier cell ran past the time limit and ignored the interrupt (SIGINT), so the "
+    "kernel was stopped before this cell ran."
+)
+HUNG_HERE = (
+    "this cell ran past the time limit and ignored the interrupt (SIGINT): the kernel was "
+    "stopped, and the cells after it did not run."
+)
+
+
+def _grade_id(cell):
+    meta = cell.get("metadata", {}).get("nbgrader", {})
+    return meta.get("grade_id", "") if isinstance(meta, dict) else ""
 
 
 def _records(cell):
@@ -123,16 +217,31 @@ class GuardCells(NbGraderPreprocessor):
             except MissingEntry:
                 return nb, resources
             released = {c.name: (c.cell_type, c.source) for c in source.source_cells}
+            locked = {c.name for c in source.source_cells if c.locked}
             grades = {g.name: g.max_score for g in source.grade_cells}
             solutions = {c.name for c in source.solution_cells}
         seen, cells = set(), []
         for cell in nb.cells:
-            gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
+            gid, note = _repair(cell, released, locked, grades, solutions)
+            if note:  # malformed metadata: that of the released cell, or none
+                self.log.warning("%s: %s", notebook_id, note)
+                if gid in grades:
+                    if gid in seen:
+                        cells[_index(cells, gid)] = _zero(
+                            released[gid], gid, grades[gid], "was duplicated"
+                        )
+                    else:
+                        seen.add(gid)
+                        cells.append(_zero(released[gid], gid, grades[gid], MALFORMED))
+                    continue
+                cells += [cell, nbformat.v4.new_markdown_cell(f"**GradingNote**: {note}")]
+                continue
             note = _unreleased(cell, grades, solutions, released)
             if note:
                 self.log.warning("%s: %s", notebook_id, note)
                 cells += [cell, nbformat.v4.new_markdown_cell(f"**GradingNote**: {note}")]
                 continue
+            gid = cell.get("metadata", {}).get("nbgrader", {}).get("grade_id")
             if gid not in grades or gid not in released:
                 cells.append(cell)
                 continue
@@ -151,6 +260,59 @@ class GuardCells(NbGraderPreprocessor):
                 cells.append(_zero(released[gid], gid, grades[gid], "was deleted"))
         nb.cells = cells
         return nb, resources
+
+
+MALFORMED = "had malformed grading metadata"
+
+
+def _malformed(meta):
+    """Whether a cell's ``metadata.nbgrader`` is not what nbgrader's schema 3 allows (a dict
+    of booleans, a grade id string, finite points for a grade cell ...): nbgrader's own
+    validator decides, plus finite points."""
+    if not isinstance(meta, dict):
+        return True
+    cell = nbformat.from_dict({"cell_type": "code", "source": "", "metadata": {"nbgrader": {}}})
+    cell.metadata.nbgrader = nbformat.from_dict(json.loads(json.dumps(meta)))
+    try:
+        MetadataValidatorV3().validate_cell(cell)
+    except Exception:  # nbgrader's and jsonschema's ValidationError, KeyError, TypeError
+        return True
+    points = meta.get("points", 0)
+    return not math.isfinite(points)
+
+
+def _repair(cell, released, locked, grades, solutions):
+    """Malformed nbgrader metadata (null, a string, ``"grade": "yes"``, ``"points": "1e9"``
+    ...) made nbgrader (or this preprocessor) fail and the student was dropped. Such a cell is
+    taken for the released cell of its grade id (or, failing that, of its cell id): a grade
+    cell is put back as released with 0 points (the caller), an answer or locked cell gets
+    its released metadata back; a cell of no released id loses the metadata. Returns
+    ``(grade id or None, note)``; ``(None, None)`` when the metadata is well formed."""
+    if not isinstance(cell.get("metadata"), dict):
+        cell["metadata"] = nbformat.NotebookNode()
+    if "nbgrader" not in cell.metadata or not _malformed(cell.metadata["nbgrader"]):
+        return None, None
+    meta = cell.metadata.pop("nbgrader")
+    gid = meta.get("grade_id") if isinstance(meta, dict) else None
+    if not isinstance(gid, str) or gid not in released:
+        gid = cell.get("id") if isinstance(cell.get("id"), str) else None
+    if gid not in released:
+        return None, (
+            "a cell had malformed grading metadata in the submission: graded as a plain cell "
+            "(0 points)."
+        )
+    if gid not in grades:
+        cell.metadata.update(
+            nbgrader_metadata(gid, solution=gid in solutions, locked=gid in locked)
+        )
+    return gid, (
+        f"the cell `{gid}` had malformed grading metadata in the submission: "
+        + (
+            "put back as released, 0 points."
+            if gid in grades
+            else "its released metadata put back."
+        )
+    )
 
 
 def _unreleased(cell, grades, solutions, released):
@@ -220,11 +382,13 @@ def _size(out):
 
 
 def _short_error(out, limit=2_000):
+    tb = out.get("traceback", [])
+    tb = tb[-5:] if isinstance(tb, list) else [tb]
     return nbformat.v4.new_output(
         "error",
         ename=str(out.get("ename", ""))[:200],
         evalue=str(out.get("evalue", ""))[:limit],
-        traceback=[line[:limit] for line in out.get("traceback", [])[-5:]],
+        traceback=[str(line)[:limit] for line in tb],
     )
 
 

@@ -200,6 +200,14 @@ def _exit_in_third_answer(nb):
     answers[2].source = "import os\nos._exit(0)\n" + answers[2].source
 
 
+def _malformed_metadata(nb):
+    """Check cells 1-3: ``metadata.nbgrader`` null, a string, and string grade and points."""
+    checks = [c for c in nb.cells if c.id.endswith("-check")]
+    checks[0].metadata["nbgrader"] = None
+    checks[1].metadata["nbgrader"] = "grade"
+    checks[2].metadata["nbgrader"].update(grade="yes", points="1e9")
+
+
 def _points_of_cells(nb, ids):
     return sum(c.metadata["nbgrader"]["points"] for c in nb.cells if c.id in ids)
 
@@ -217,6 +225,7 @@ def test_fast_class(course):
     submit(course, "g_instructor_after", "solved")
     submit(course, "h_added_grade_cells", "solved", edit=_add_grade_cells)
     submit(course, "i_os_exit", "solved", edit=_exit_in_third_answer)
+    submit(course, "j_malformed_metadata", "solved", edit=_malformed_metadata)
     code, out = run(["autograde", PS, "--create"], course)
     assert code == 0, out
     got = scores(course)
@@ -243,6 +252,15 @@ def test_fast_class(course):
     ]
     assert any("duplicated" in n for n in notes) and any("deleted" in n for n in notes), notes
     assert any("another type" in n for n in notes), notes
+    # metadata.nbgrader null, a string, "points": "1e9": the student was dropped (regression)
+    assert got["j_malformed_metadata"] == (TOTAL - _points_of_cells(solved, checks[:3]), TOTAL)
+    notes = [
+        o.evalue
+        for c in autograded(course, "j_malformed_metadata").cells
+        for o in c.get("outputs", [])
+        if o.output_type == "error"
+    ]
+    assert sum("malformed grading metadata" in n for n in notes) == 3, notes
     # nothing of the instructor's was read or written
     snoop = json.dumps([c.get("outputs", []) for c in autograded(course, "e_snoop").cells])
     assert "BEGIN SOLUTION" not in snoop and "SOLUTIONS" not in snoop
@@ -281,6 +299,61 @@ def test_slow_attacks(course):
     (path,) = (course / "autograded" / "s_output_flood" / PS).glob("*.ipynb")
     assert path.stat().st_size < 2_000_000, path.stat().st_size
     assert "bytes of output cut" in path.read_text()
+
+
+SIGINT_LOOP = "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n    pass\n"
+FLUSHED_FLOOD = """\
+import sys, time
+_t0 = time.time()
+while time.time() - _t0 < 4:
+    sys.stdout.write("y" * 2**20 + "\\n"); sys.stdout.flush(); time.sleep(0.005)
+"""
+PEAK = (
+    "import resource, subprocess, sys\n"
+    "subprocess.run(sys.argv[1:])\n"
+    "print('PEAK_KB', resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)\n"
+)
+
+
+def _in_answers(numbers, code):
+    def edit(nb):
+        answers = [c for c in nb.cells if c.id.endswith("-answer")]
+        for i in numbers:
+            answers[i].source = code + "\n" + answers[i].source
+
+    return edit
+
+
+@pytest.mark.slow_grading
+def test_sigint_ignoring_loop_and_flushed_floods_no_longer_drop_the_student(tmp_path):
+    """A loop that ignores SIGINT (the interrupt at the timeout) and flushed 1 MB writes in three
+    cells: both students were dropped (autograde exit 1; the floods held 3.2 GB in the grader).
+    Now the loop's kernel is killed after the timeout and the checks before it keep their
+    points; the floods are cut as they arrive and score full marks."""
+    root = tmp_path / "course"
+    write_course(root)
+    code, out = run(["generate_assignment", PS, "--create"], root)
+    assert code == 0, out
+    submit(root, "a_sigint_loop", "solved", edit=_in_answers([2], SIGINT_LOOP))
+    submit(root, "b_flushed_floods", "solved", edit=_in_answers([0, 1, 2], FLUSHED_FLOOD))
+    submit(root, "c_instructor_after", "solved")
+    env = {**os.environ, "PATH": f"{NBGRADER.parent}{os.pathsep}{os.environ.get('PATH', '')}"}
+    argv = [sys.executable, "-c", PEAK, str(NBGRADER), "autograde", PS, "--create"]
+    proc = subprocess.run(  # a short timeout: the loop costs it, and 4 s of iopub, once
+        [*argv, "--Execute.timeout=20"], cwd=root, capture_output=True, text=True, env=env
+    )
+    assert proc.returncode == 0 and "PEAK_KB" in proc.stdout, proc.stdout + proc.stderr
+    peak_mb = int(proc.stdout.split("PEAK_KB")[1].split()[0]) // 1024
+    got = scores(root)
+    _, solved = _notebook(root, "solved")
+    checks = [c.id for c in solved.cells if c.id.endswith("-check")]
+    assert got["a_sigint_loop"] == (_points_of_cells(solved, checks[:2]), TOTAL), got
+    hung = json.dumps([c.get("outputs", []) for c in autograded(root, "a_sigint_loop").cells])
+    assert "ignored the interrupt" in hung and "kernel was stopped" in hung
+    assert got["b_flushed_floods"] == got["c_instructor_after"] == (TOTAL, TOTAL), got
+    (path,) = (root / "autograded" / "b_flushed_floods" / PS).glob("*.ipynb")
+    assert path.stat().st_size < 1_000_000 and "cut while the cell ran" in path.read_text()
+    assert peak_mb < 1000, peak_mb  # nbgrader or its kernel; before: 3.2 GB and exit 1
 
 
 FAKE_MATHJAX = "window.ROTATIONS_FAKE_MATHJAX = {a: {b: 1}}; // {{ not a template {% x %} {# #}\n"

@@ -3,7 +3,9 @@ grading metadata a student added, and a kernel that dies in an answer cell (issu
 
 from __future__ import annotations
 
+import json
 import shutil
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -98,3 +100,160 @@ def test_os_exit_in_an_answer_cell_gives_the_grade_cells_after_it_0_with_a_note(
     (note,) = nb.cells[2].outputs
     assert note.output_type == "error" and "kernel died" in note.evalue
     assert "kernel died" in nb.cells[2].metadata[P.ZERO]
+
+
+def _released_check(gid="ex-check"):
+    return _cell(gid, grade=True, locked=True, points=2)
+
+
+@pytest.mark.parametrize(
+    "meta",
+    [None, "grade", {"grade": "yes", "points": "1e9"}, {"points": "1e9"}, {"grade_id": ["x"]}],
+    ids=["null", "string", "grade_yes_points_string", "points_string", "grade_id_list"],
+)
+def test_malformed_grading_metadata_dropped_the_student_now_the_cell_is_put_back(meta):
+    """metadata.nbgrader null, a string, "grade": "yes" or "points": "1e9" on a check cell:
+    GuardCells raised AttributeError (or nbgrader's OverwriteCells "Inconsistent checksums")
+    and the student got no grade. Now the released grade cell is named, to be put back (0)."""
+    cell = _released_check()
+    cell.id = "ex-check"
+    if isinstance(meta, dict):
+        cell.metadata["nbgrader"].update(meta)
+    else:
+        cell.metadata["nbgrader"] = meta
+    locked = {"ex-check"}
+    gid, note = P._repair(cell, RELEASED, locked, GRADES, SOLUTIONS)
+    assert gid == "ex-check" and "malformed" in note and "0 points" in note
+    assert "nbgrader" not in cell.metadata
+    zero = P._zero(RELEASED[gid], gid, GRADES[gid], P.MALFORMED)
+    assert "malformed" in zero.metadata[P.ZERO]
+
+
+def test_malformed_metadata_of_an_answer_cell_gets_its_released_metadata_back():
+    cell = _cell("ex-answer", solution=True)
+    cell.id = "ex-answer"
+    cell.metadata["nbgrader"]["points"] = float("nan")
+    gid, note = P._repair(cell, RELEASED, set(), GRADES, SOLUTIONS)
+    meta = cell.metadata["nbgrader"]
+    assert gid == "ex-answer" and meta["solution"] and not meta["grade"] and "points" not in meta
+    assert "malformed" in note
+
+
+def test_malformed_metadata_of_an_unreleased_cell_is_removed_with_a_note():
+    cell = nbformat.v4.new_code_cell("x = 1")
+    cell.metadata["nbgrader"] = "grade"
+    gid, note = P._repair(cell, RELEASED, set(), GRADES, SOLUTIONS)
+    assert gid is None and "plain cell" in note and "nbgrader" not in cell.metadata
+
+
+def test_well_formed_metadata_is_left_to_the_other_checks():
+    for cell in (
+        _released_check(),
+        _cell("ex-answer", solution=True),
+        _cell("mine", grade=True, points=5),
+    ):
+        before = json.dumps(cell.metadata)
+        assert P._repair(cell, RELEASED, set(), GRADES, SOLUTIONS) == (None, None)
+        assert json.dumps(cell.metadata) == before
+
+
+def _confined_run(cells, timeout):
+    if shutil.which("bwrap") is None:
+        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
+    nb = nbformat.v4.new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    ex = P.ConfinedExecute(timeout=timeout)
+    return ex.preprocess(nb, {"metadata": {"path": "/tmp"}})[0]
+
+
+def test_a_loop_that_ignores_sigint_past_the_timeout_is_killed_and_the_student_graded():
+    """signal.signal(SIGINT, SIG_IGN); while True: pass — the interrupt at the timeout was
+    ignored, nbclient raised CellTimeoutError and nbgrader dropped the student (exit 1)."""
+    before = _cell("a-check", grade=True, locked=True, points=1)
+    before.source = "print('ran')"
+    hang = nbformat.v4.new_code_cell(
+        "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n    pass\n"
+    )
+    after = _cell("b-check", grade=True, locked=True, points=2)
+    after.source = "print('after')"
+    start = time.monotonic()
+    nb = _confined_run([before, hang, after], timeout=3)
+    assert time.monotonic() - start < 40
+    assert [o.output_type for o in nb.cells[0].outputs] == ["stream"]
+    assert "ignored the interrupt" in nb.cells[1].outputs[-1].evalue
+    (note,) = nb.cells[2].outputs
+    assert note.output_type == "error" and "kernel was stopped" in note.evalue
+    assert "0 points" in nb.cells[2].metadata[P.ZERO]
+
+
+FLOOD = """\
+import sys, time
+_t0 = time.time()
+while time.time() - _t0 < {seconds}:
+    sys.stdout.write("y" * 2**20 + "\\n"); sys.stdout.flush(); time.sleep(0.005)
+"""
+
+MEMORY = """\
+import json, resource, sys
+sys.path.insert(0, {root!r})
+import nbformat
+from tests.test_grading_preprocessor import _confined_run
+cells = [nbformat.v4.new_code_cell({flood!r}), nbformat.v4.new_code_cell("print('after')")]
+nb = _confined_run(cells, timeout=60)
+print(json.dumps({{"outputs": [c.outputs for c in nb.cells],
+                  "maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss // 1024}}))
+"""
+
+
+def test_flushed_output_flood_is_capped_while_it_arrives_not_held_in_the_grader():
+    """20 s of flushed 1 MB writes made the grader hold 1.5 GB before CapOutput cut it (3 such
+    cells: 3.2 GB and the student dropped). The grader (a process of its own here, to read
+    its peak memory) now keeps about the cap per cell, plus a note."""
+    code = MEMORY.format(root=str(ROOT), flood=FLOOD.format(seconds=6))
+    proc = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=300, cwd=ROOT
+    )
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    out = json.loads(proc.stdout.splitlines()[-1])
+    flood, after = out["outputs"]
+    assert after[0]["text"] == "after\n"
+    note = flood[-1]["text"]
+    assert "bytes of output cut while the cell ran" in note, flood
+    cut = int(note.split("GradingNote: ")[1].split()[0])
+    assert cut > 200_000_000, cut  # the flood did arrive
+    assert len(json.dumps(flood)) < 110_000
+    assert out["maxrss_mb"] < 400, out["maxrss_mb"]  # before: 1.5 GB for 20 s of flood
+
+
+def test_output_messages_are_capped_as_they_arrive_and_the_first_errors_kept():
+    ex = P.ConfinedExecute(max_output_bytes=10_000)
+    ex._start_cell(0)
+    cell = nbformat.v4.new_code_cell("x")
+    ex.clear_before_next_output = False
+
+    def msg(kind, **content):
+        return {
+            "msg_type": kind,
+            "content": content,
+            "parent_header": {"msg_id": "m"},
+            "header": {"msg_type": kind},
+            "metadata": {},
+            "buffers": [],
+        }
+
+    for _ in range(50):
+        ex.process_message(msg("stream", name="stdout", text="x" * 1000), cell, 0)
+        ex.process_message(
+            msg("display_data", data={"text/plain": "y" * 1000}, metadata={}), cell, 0
+        )
+    ex.process_message(
+        msg("error", ename="E", evalue="v" * 10**6, traceback=["t" * 10**6]), cell, 0
+    )
+    assert sum(len(json.dumps(o)) for o in cell.outputs) < 20_000
+    errors = [o for o in cell.outputs if o.output_type == "error"]
+    assert len(errors) == 1 and len(errors[0].evalue) <= 2_000
+    assert ex._cut > 80_000

@@ -119,6 +119,13 @@ class ConfinedExecute(Execute):
 
     execute_cell = run_sync(async_execute_cell)
 
+    async def async_start_new_kernel_client(self):
+        kc = await super().async_start_new_kernel_client()  # the kernel answered: sockets bound
+        self.km.seal_scratch()
+        return kc
+
+    start_new_kernel_client = run_sync(async_start_new_kernel_client)
+
     def process_message(self, msg, cell, cell_index):
         kind = msg.get("msg_type", "")
         if kind in OUTPUT_MESSAGES or kind.startswith("comm"):

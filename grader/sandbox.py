@@ -11,8 +11,11 @@ Debian's ``bubblewrap`` (``bwrap``) with an **allow-list** view of the machine:
   Home folders, other checkouts, nbgrader's exchange, Jupyter's runtime folder (the connection
   files of other kernels) and the course directory do not exist in the kernel's view;
 - the only writable places are a size-limited tmpfs ``/tmp`` (:data:`TMP_BYTES`; the kernel's
-  working directory ``/tmp/work`` and its ``HOME``), a private ``/dev`` and the kernel's own
-  scratch folder (its connection file and ipc sockets), made afresh for each kernel;
+  working directory ``/tmp/work`` and its ``HOME``), a size-limited tmpfs ``/dev/shm``
+  (:data:`SHM_BYTES`; the rest of the private ``/dev`` is read-only) and the kernel's own
+  scratch folder (its connection file and ipc sockets), made afresh for each kernel and, for
+  a grader run as root, sealed once the kernel is ready
+  (:meth:`ConfinedKernelManager.seal_scratch`);
 - every namespace bwrap can unshare is new (``--unshare-all``: user, PID, network, IPC, UTS,
   cgroup): no network at all (the kernel talks to nbgrader over ipc sockets in the scratch
   folder, not TCP), and ``/proc`` is the sandbox's own (``/proc/1`` is its init); every
@@ -21,7 +24,8 @@ Debian's ``bubblewrap`` (``bwrap``) with an **allow-list** view of the machine:
 - the environment is cleared (bwrap's own too, so ``/proc/1/environ`` holds nothing of the
   grader's): only :func:`kernel_env`;
 - resource limits (:data:`LIMITS`): address space, file size, processes (the process limit
-  does not bind a kernel run by root: Linux exempts uid 0), no core files;
+  does not bind a kernel run by root: Linux exempts the host's uid 0, and bwrap's ``--uid``
+  inside does not change it; tested), no core files;
 - Python starts with ``-P`` (the working directory is not put on ``sys.path``), imports the
   installed ``course_lib`` before any cell runs: a ``course_lib/`` folder handed in beside the
   notebook is never seen.
@@ -44,6 +48,11 @@ __all__ = ["ConfinedKernelManager", "bwrap_command", "kernel_env", "BOOT", "LIMI
 
 SCRATCH = "/tmp/work"
 TMP_BYTES = 256 * 2**20
+#: The sandbox's /dev/shm (POSIX shared memory, multiprocessing's semaphores): a tmpfs of its own.
+SHM_BYTES = 64 * 2**20
+#: Owner of the kernel's scratch folder once the kernel is ready (grader run as root): not the
+#: kernel's uid, so the kernel (no capabilities) can neither write there nor chmod it back.
+SEAL_UID = 65534
 #: Resource limits of the kernel (soft = hard).
 LIMITS = {
     "RLIMIT_AS": 4 * 2**30,
@@ -102,7 +111,10 @@ def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
     cmd = [shutil.which("bwrap") or "bwrap", "--unshare-all", "--hostname", "grading"]
     cmd += ["--die-with-parent", "--new-session", "--cap-drop", "ALL", "--clearenv"]
     cmd += _system()
-    cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(TMP_BYTES), "--tmpfs", "/tmp"]
+    cmd += ["--proc", "/proc", "--dev", "/dev"]
+    # bwrap's /dev is a tmpfs of half the RAM: a sized /dev/shm, and /dev itself read-only
+    cmd += ["--size", str(SHM_BYTES), "--tmpfs", "/dev/shm", "--remount-ro", "/dev"]
+    cmd += ["--size", str(TMP_BYTES), "--tmpfs", "/tmp"]
     # after the tmpfs: a venv or checkout that lives under /tmp (a CI clone) stays visible
     for folder in expose:
         cmd += ["--ro-bind", folder, folder]
@@ -195,6 +207,24 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
                     env={},
                 )
             return self._kernel_spec
+
+        def seal_scratch(self):
+            """Once the kernel has bound its ipc sockets (it answered ``kernel_info``): the
+            scratch folder and its files are given to :data:`SEAL_UID`, read-only, when the
+            grader runs as root. The kernel (uid 0 inside, every capability dropped) can then
+            not write there (it was a writable host folder on the host's disk, no size limit),
+            nor chmod it back; nbgrader (root) still reaches the sockets and removes the
+            folder. Returns whether it was sealed (as another user, the kernel is that user:
+            only ``RLIMIT_FSIZE`` bounds what it writes there)."""
+            if os.geteuid() != 0:
+                return False
+            for entry in os.scandir(self.scratch):
+                os.chown(entry.path, SEAL_UID, SEAL_UID, follow_symlinks=False)
+                if entry.is_file(follow_symlinks=False):
+                    os.chmod(entry.path, 0o400)
+            os.chown(self.scratch, SEAL_UID, SEAL_UID)
+            os.chmod(self.scratch, 0o555)
+            return True
 
         async def _async_cleanup_resources(self, restart=False):
             await super()._async_cleanup_resources(restart=restart)

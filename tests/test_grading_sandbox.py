@@ -46,6 +46,43 @@ attempt("environ", lambda: dict(os.environ))
 attempt("tcp", lambda: socket.create_connection(("127.0.0.1", PORT), timeout=2))
 attempt("write_root", lambda: open("/evil", "w"))
 attempt("write_lib", lambda: open(os.path.join(os.path.dirname(course_lib.__file__), "x"), "w"))
+import ipykernel.connect, time
+scratch = os.path.dirname(ipykernel.connect.get_connection_file())
+def fill(place, mb):
+    done = 0
+    try:
+        with open(os.path.join(place, "fill"), "wb") as f:
+            for _ in range(mb):
+                f.write(bytes(2**20))
+                f.flush()
+                done += 1
+    except OSError as err:
+        return f"{done} MiB, refused {type(err).__name__}"
+    finally:
+        try:
+            os.remove(os.path.join(place, "fill"))
+        except OSError:
+            pass
+    return f"{done} MiB"
+out["statvfs"] = {p: os.statvfs(p).f_blocks * os.statvfs(p).f_frsize for p in ("/dev/shm", "/tmp")}
+out["fill_shm"] = fill("/dev/shm", 70)
+out["fill_dev"] = fill("/dev", 1)
+out["fill_scratch"] = fill(scratch, 1)
+attempt("chmod_scratch", lambda: os.chmod(scratch, 0o777))
+attempt("dev_null", lambda: open("/dev/null", "w").write("x"))
+kids = []
+try:
+    for _ in range(80):  # bounded: at most 80 children, each sleeping 1 s
+        pid = os.fork()
+        if pid == 0:
+            time.sleep(1)
+            os._exit(0)
+        kids.append(pid)
+except OSError as err:
+    out["fork_refused"] = type(err).__name__
+out["forked"] = len(kids)
+for pid in kids:
+    os.waitpid(pid, 0)
 out["as"] = resource.getrlimit(resource.RLIMIT_AS)[0]
 out["fsize"] = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
 print("PROBE" + json.dumps(out))
@@ -60,6 +97,7 @@ async def _run_confined(code, hide):
     texts = []
     try:
         await kc.wait_for_ready(timeout=60)
+        km.seal_scratch()  # as ConfinedExecute does once the kernel has answered
         await kc.execute_interactive(
             code,
             output_hook=lambda m: texts.append(m["content"].get("text", "")),
@@ -170,3 +208,29 @@ def test_regression_a_venv_under_tmp_is_mounted_over_the_sandboxs_own_tmp():
     tmpfs = max(i for i, a in enumerate(cmd) if a == "--tmpfs" and cmd[i + 1] == "/tmp")
     binds = [i for i, a in enumerate(cmd) if a == "--ro-bind" and cmd[i + 1].startswith("/tmp/")]
     assert binds and all(i > tmpfs for i in binds)
+
+
+def test_dev_shm_dev_and_scratch_writes_are_bounded_regression_attack_6b(probe):
+    """/dev and /dev/shm were tmpfs of half the RAM (11.8 GiB here, not counted by
+    RLIMIT_AS) and the scratch folder a writable host folder on the host's disk."""
+    out, _, _ = probe
+    assert out["statvfs"]["/dev/shm"] == sandbox.SHM_BYTES, out
+    assert out["statvfs"]["/tmp"] == sandbox.TMP_BYTES, out
+    assert out["fill_shm"].endswith("refused OSError"), out  # ENOSPC at 64 MiB
+    assert int(out["fill_shm"].split()[0]) < 70, out
+    assert out["fill_dev"].startswith("0 MiB, refused"), out  # /dev is read-only
+    assert out["dev_null"] == "1", out
+    if os.geteuid() == 0:  # sealed: given to another uid, read-only, no capability to undo it
+        assert out["fill_scratch"].startswith("0 MiB, refused"), out
+        assert out["chmod_scratch"].startswith("refused"), out
+
+
+def test_the_process_limit_binds_only_when_the_grader_is_not_root(probe):
+    """RLIMIT_NPROC does not bind uid 0 (Linux exempts the host's root user, also inside a
+    user namespace, also with bwrap's --uid 1000: the kernel's host uid stays 0). Measured
+    with a bounded fork test (80 children at most), never a bomb."""
+    out, _, _ = probe
+    if os.geteuid() == 0:
+        assert out["forked"] == 80, out  # the documented gap: a cell's timeout ends them
+    else:
+        assert out["forked"] < sandbox.LIMITS["RLIMIT_NPROC"], out

@@ -104,19 +104,20 @@ def _numbers_of(ex, answer):
 
 
 def value_fingerprint(ex, answer, mistakes):
-    name, step = ex.name, E.STEP_NUMBER
+    """The digests of the right answer's groups of entries (``E.number_digests``); a known mistake
+    is a transformation of the student's answer that explains every entry, or else the digest
+    of the mistaken value."""
+    name, shape = ex.name, ex.answer.shape
     right = _numbers_of(ex, answer)
-    fp = {"entries": [D.cell_digest(name, f"entry{i}", v, step) for i, v in enumerate(right)]}
+    fp = {"size": len(right), "value": E.number_digests(name, "value", right, shape)}
     fp["mistakes"] = {}
     for mid, wrong_answer in mistakes.items():
         wrong = _numbers_of(ex, wrong_answer)
         transform = _number_transform(ex.answer, right, wrong)
         taken = [rec.get("transform") for rec in fp["mistakes"].values()]
-        if transform is None or transform in taken:
-            digests = [
-                D.cell_digest(name, f"mistake {mid} {i}", v, step) for i, v in enumerate(wrong)
-            ]
-            fp["mistakes"][mid] = {"entries": digests}
+        if transform is None or None in transform["ops"] or transform in taken:
+            digests = E.number_digests(name, f"mistake {mid} ", wrong, shape)
+            fp["mistakes"][mid] = {"value": digests}
         else:
             fp["mistakes"][mid] = {"transform": transform}
     return fp

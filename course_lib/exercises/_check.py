@@ -314,58 +314,48 @@ def _numbers(M):
     return vals.real
 
 
-def _entry_ok(name, fp, i, value):
-    """Does entry ``i`` of a numeric answer, ``value``, match the right one (within TOL)?"""
-    return D.matches(name, f"entry{i}", value, E.STEP_NUMBER, fp["entries"][i], eps=E.TOL)
+def _groups_ok(name, label, digests, shape, vec, stop=True):
+    """Per group of entries (a vector whole, a matrix by columns): does it match its digest?
+    With ``stop``, the groups after the first that does not match count as not matching."""
+    ok = [False] * len(digests)
+    for g, stored in enumerate(digests):
+        ok[g] = E.number_group_ok(name, label, vec, shape, g, stored)
+        if stop and not ok[g]:
+            break
+    return ok
 
 
-def _mistake_entry_ok(name, mid, digests, i, value):
-    """Does entry ``i`` match that of the mistake ``mid`` stored as digests of its values?"""
-    return D.matches(name, f"mistake {mid} {i}", value, E.STEP_NUMBER, digests[i], eps=E.TOL)
-
-
-def _entries_ok(name, fp, vec):
-    """Per entry: does it match the right one? (every entry is digested)"""
-    return np.array([_entry_ok(name, fp, i, v) for i, v in enumerate(vec)])
-
-
-def _all_right(name, fp, vec):
-    """Do all entries match? Stops at the first that does not."""
+def _all_right(name, fp, vec, shape):
+    """Are all entries right (within TOL each)?"""
     vec = np.ravel(vec)
-    return len(vec) == len(fp["entries"]) and all(
-        np.isfinite(v) and _entry_ok(name, fp, i, v) for i, v in enumerate(vec)
-    )
+    if len(vec) != fp["size"] or not np.all(np.isfinite(vec)):
+        return False
+    return all(_groups_ok(name, "value", fp["value"], shape, vec))
 
 
 def _number_mistake(ex, fp, mid, rec, v):
     """Did the student make the known mistake ``mid``? Its transformation (a permutation of the
-    entries, then an operation per entry) turns the student's answer into the right one on the
-    entries it names; or, stored as digests of its values, the answer matches them."""
-    name = ex.name
-    if "entries" in rec:
-        return all(_mistake_entry_ok(name, mid, rec["entries"], i, x) for i, x in enumerate(v))
+    entries, then an operation per entry) turns the student's answer into the right one; or,
+    stored as the digests of its value, the answer matches them."""
+    shape = ex.answer.shape
+    if "value" in rec:
+        return all(_groups_ok(ex.name, f"mistake {mid} ", rec["value"], shape, v))
     t = rec["transform"]
-    moved = v[PERMUTATIONS[t["perm"]](ex.answer.shape)]
-    checked = False
-    for i, op in enumerate(t["ops"]):
-        if op is None:
-            continue
-        value = NUMBER_OPS[op](float(moved[i]))
-        if not np.isfinite(value) or not _entry_ok(name, fp, i, value):
-            return False
-        checked = True
-    return checked
+    moved = v[PERMUTATIONS[t["perm"]](shape)]
+    with np.errstate(all="ignore"):
+        fixed = np.array([NUMBER_OPS[op](float(x)) for op, x in zip(t["ops"], moved)])
+    return _all_right(ex.name, fp, fixed, shape)
 
 
 def _angle_hint(name, fp, v):
-    if _all_right(name, fp, v * np.pi / 180):
+    if _all_right(name, fp, v * np.pi / 180, ()):
         return "your angle is in degrees; the exercise asks for radians."
-    if any(_all_right(name, fp, v + shift) for shift in (2 * np.pi, -2 * np.pi)):
+    if any(_all_right(name, fp, v + shift, ()) for shift in (2 * np.pi, -2 * np.pi)):
         return (
             "your angle differs from the right one by a full turn (2π): give it in "
             "the range the exercise asks for."
         )
-    if _all_right(name, fp, 2 * np.pi - v):
+    if _all_right(name, fp, 2 * np.pi - v, ()):
         return (
             "your angle is 2π minus the right one: the two have the same cosine; give the "
             "one in the range the exercise asks for."
@@ -393,18 +383,35 @@ def _value_hint(ex, fp, v):
     for mid, rec in fp["mistakes"].items():
         if _number_mistake(ex, fp, mid, rec, v):
             return ex.mistakes[mid]
-    if np.any(v != 0) and _all_right(name, fp, -v):
+    if np.any(v != 0) and _all_right(name, fp, -v, spec.shape):
         return _NEGATIVE
-    if len(spec.shape) == 1 and _all_right(name, fp, v[::-1]):
+    if len(spec.shape) == 1 and _all_right(name, fp, v[::-1], spec.shape):
         return (
             "your components are in the reverse order: give them in the order the exercise "
             "asks for."
         )
-    if len(spec.shape) == 2 and _all_right(name, fp, v.reshape(spec.shape).T.ravel()):
+    if len(spec.shape) == 2 and _all_right(name, fp, v.reshape(spec.shape).T.ravel(), spec.shape):
         return _TRANSPOSE
     hint = _angle_hint(name, fp, v) if spec.angle else None
     hint = hint or (_rotation_hint(v) if spec.rotation else None)
-    return hint or _positions(~_entries_ok(name, fp, v).reshape(spec.shape), spec.shape)
+    if hint:
+        return hint
+    return _not_right(spec.shape, _groups_ok(name, "value", fp["value"], spec.shape, v, False))
+
+
+def _not_right(shape, ok):
+    """What is wrong, to the group: a digest covers a vector whole or a matrix's column (a
+    verdict per entry would let a search find the answer one entry at a time)."""
+    if len(shape) == 0:
+        return "the value is not right."
+    if len(shape) == 1:
+        return "your answer is not right: at least one component is wrong."
+    bad = [str(g + 1) for g, good in enumerate(ok) if not good]
+    return (
+        f"column {bad[0]} is not right."
+        if len(bad) == 1
+        else f"columns {_join(bad)} are not right."
+    )
 
 
 _ROUNDED = (
@@ -441,23 +448,24 @@ def _single_precision(answer):
 _SIMPLE_BASES = (1.0, np.pi, np.sqrt(2), np.sqrt(3))
 
 
-def _single_precision_matches(name, fp, v):
-    """Per entry: is it the single-precision rounding of the right one? The digests cannot be
-    scanned over a float32 rounding interval (tens of cells, a stretched digest each), so the
-    simple values near the entry (a fraction, times 1, π, √2 or √3) are tried."""
+def _simple_near(x):
+    """The simple value (a fraction, times 1, π, √2 or √3) within 2 float32 ulps of ``x``, or
+    ``x``."""
     from fractions import Fraction
 
-    ok = []
-    for i, x in enumerate(v):
-        ulp = float(np.spacing(np.float32(abs(x)))) if abs(x) < 1e6 else None
-        right = _entry_ok(name, fp, i, x)
-        for base in _SIMPLE_BASES if ulp and not right else ():
-            guess = float(Fraction(x / base).limit_denominator(360)) * base
-            if abs(guess - x) <= 2 * ulp and _entry_ok(name, fp, i, guess):
-                right = True
-                break
-        ok.append(right)
-    return np.array(ok)
+    ulp = float(np.spacing(np.float32(abs(x)))) if abs(x) < 1e6 else 0.0
+    for base in _SIMPLE_BASES:
+        guess = float(Fraction(x / base).limit_denominator(360)) * base
+        if abs(guess - x) <= 2 * ulp:
+            return guess
+    return x
+
+
+def _single_precision_right(name, fp, v, shape):
+    """Is the answer the single-precision rounding of the right one? The digest cannot be
+    scanned over a float32 rounding interval (tens of cells per entry), so each entry is
+    replaced by the simple value near it, when there is one, and they are checked together."""
+    return _all_right(name, fp, np.array([_simple_near(x) for x in v]), shape)
 
 
 _SINGLE = (
@@ -470,15 +478,14 @@ _SINGLE = (
 def judge_value(ex, fp, answer):
     form, M = read_answer(answer, ex.answer.shape, set(), numeric=True)
     v = _numbers(M)
-    if _all_right(ex.name, fp, v):
+    shape = ex.answer.shape
+    if _all_right(ex.name, fp, v, shape):
         return "correct", "correct."
     if _single_precision(answer):
-        ok = _single_precision_matches(ex.name, fp, v)
-        if ok.all():
+        if _single_precision_right(ex.name, fp, v, shape):
             return "wrong", "right to single precision, but " + _SINGLE
-        return "wrong", _positions(
-            ~ok.reshape(ex.answer.shape), ex.answer.shape
-        ) + " Also, " + _SINGLE
+        ok = _groups_ok(ex.name, "value", fp["value"], shape, v, stop=False)
+        return "wrong", _not_right(shape, ok) + " Also, " + _SINGLE
     hint = _value_hint(ex, fp, v)
     if _typed_rounded(M) and not any(hint == text for text in ex.mistakes.values()):
         hint += _ROUNDED

@@ -20,7 +20,7 @@ numbers that are rounded and digested: the value itself (two projections, grid
 values near zero, each entry, :math:`A/\lVert A\rVert` (a constant multiple), :math:`A_k /
 \lVert A_k\rVert` at every point (a factor that changes with the symbols), the traceless part
 (the I term), and the coefficients of I, W, W² of a polynomial in W. A numeric answer has one
-digest per entry (grid :data:`STEP_NUMBER`).
+digest of all its entries together (grid :data:`STEP_NUMBER`, :func:`number_digest`).
 """
 
 from __future__ import annotations
@@ -46,11 +46,42 @@ from ..tolerance import TOL
 from . import _digests as D
 from ._reading import Rejected
 
-#: Grid of a numeric entry: within TOL always passes, more than 4 TOL away never does.
+#: Grid of the entries of a numeric answer: an entry within TOL of the right one always
+#: passes, one more than 4 TOL away never does. Half-shifted (NUMBER_OFFSET): integers and short
+#: decimals sit in the middle of their cells, so no neighbour cell has to be tried for them.
 STEP_NUMBER = 3 * TOL
+NUMBER_OFFSET = 0.5
 #: Grid of the projections of a symbolic answer (its verdict) and of the hints' features.
 STEP_VALUE = 8 * TOL
 STEP_HINT = 32 * TOL
+
+
+def number_groups(shape):
+    """The index groups of a numeric answer's entries that are digested together: a matrix by
+    columns, a vector or a number whole. (A digest per entry let a search recover a vector one
+    entry at a time; the whole of a 3x3 matrix at once would need up to 1.7^9 candidate cells
+    tried per comparison, since an entry is within TOL of a cell edge 2 times in 3.)"""
+    if len(shape) == 2:
+        return [list(range(j, shape[0] * shape[1], shape[1])) for j in range(shape[1])]
+    return [list(range(int(np.prod(shape, dtype=int))))]
+
+
+def number_digests(name, label, values, shape):
+    """The digests of the groups of the entries ``values`` (flat) of a numeric answer."""
+    v = np.ravel(values)
+    return [
+        D.cell_digest(name, f"{label}{g}", v[idx], STEP_NUMBER, NUMBER_OFFSET)
+        for g, idx in enumerate(number_groups(shape))
+    ]
+
+
+def number_group_ok(name, label, values, shape, g, stored):
+    """Do the entries of group ``g`` of ``values`` (within TOL each) have the stored digest?"""
+    idx = number_groups(shape)[g]
+    v = np.ravel(values)[idx]
+    return D.matches(name, f"{label}{g}", v, STEP_NUMBER, stored, TOL, NUMBER_OFFSET)
+
+
 #: Points: at least this many, in pairs over the units of the exercise.
 MIN_POINTS = 48
 _TURN = 4 * np.pi

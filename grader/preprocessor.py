@@ -25,6 +25,7 @@ import json
 import math
 
 import nbformat
+import zmq
 from jupyter_core.utils import run_sync
 from nbclient.exceptions import CellTimeoutError, DeadKernelError
 from nbgrader import utils
@@ -74,6 +75,14 @@ class ConfinedExecute(Execute):
         kwargs["kernel_manager_class"] = ConfinedKernelManager
         super().__init__(*args, **kwargs)
         self._start_cell(None)
+
+    def create_kernel_manager(self):
+        km = super().create_kernel_manager()
+        # Messages wait in ZMQ's receive queue until the loop reads them: at its default of 1000
+        # messages, a flood of 1 MB writes held up to 1 GB in the grader (483 MB for a 6 s flood
+        # on a loaded machine). Past IOPUB_QUEUE waiting messages the socket drops them.
+        km.context.setsockopt(zmq.RCVHWM, IOPUB_QUEUE)
+        return km
 
     def _start_cell(self, index):
         self._running, self._budget, self._cut = index, self.max_output_bytes - NOTE_ROOM, 0
@@ -156,6 +165,8 @@ class ConfinedExecute(Execute):
         return super().process_message(msg, cell, cell_index)
 
 
+#: At most this many messages wait unread in the grader's receive queues (ZMQ's RCVHWM).
+IOPUB_QUEUE = 32
 #: Messages that become outputs (or update them) in the grader's copy of the notebook.
 OUTPUT_MESSAGES = {"stream", "display_data", "execute_result", "update_display_data", "error"}
 NOTE_ROOM = 200  # so CapOutput, after, never cuts again what ConfinedExecute kept

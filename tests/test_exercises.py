@@ -893,3 +893,10 @@ def test_regression_coefficients_in_theta_alone_interpolating_the_points_passed(
     c2 = _bump_interpolant(theta, nodes, coeffs[first, 2])
     result = check(name, sp.Identity(3) + c1 * W + c2 * W**2)
     assert not result.ok and result.status == "wrong", str(result)
+
+
+def test_regression_angle_hints_of_a_vector_of_angles_were_checked_against_one_entry():
+    # digested whole, the three angles of 5.4 must be compared whole: in degrees they get the
+    # degrees hint (compared as a scalar, the hint could never fire)
+    r = np.array([float(v) for v in right("proper_euler_angles")])
+    assert "in degrees" in check("proper_euler_angles", np.degrees(r)).message

@@ -347,15 +347,15 @@ def _number_mistake(ex, fp, mid, rec, v):
     return _all_right(ex.name, fp, fixed, shape)
 
 
-def _angle_hint(name, fp, v):
-    if _all_right(name, fp, v * np.pi / 180, ()):
+def _angle_hint(name, fp, v, shape):
+    if _all_right(name, fp, v * np.pi / 180, shape):
         return "your angle is in degrees; the exercise asks for radians."
-    if any(_all_right(name, fp, v + shift, ()) for shift in (2 * np.pi, -2 * np.pi)):
+    if any(_all_right(name, fp, v + shift, shape) for shift in (2 * np.pi, -2 * np.pi)):
         return (
             "your angle differs from the right one by a full turn (2π): give it in "
             "the range the exercise asks for."
         )
-    if _all_right(name, fp, 2 * np.pi - v, ()):
+    if _all_right(name, fp, 2 * np.pi - v, shape):
         return (
             "your angle is 2π minus the right one: the two have the same cosine; give the "
             "one in the range the exercise asks for."
@@ -392,7 +392,7 @@ def _value_hint(ex, fp, v):
         )
     if len(spec.shape) == 2 and _all_right(name, fp, v.reshape(spec.shape).T.ravel(), spec.shape):
         return _TRANSPOSE
-    hint = _angle_hint(name, fp, v) if spec.angle else None
+    hint = _angle_hint(name, fp, v, spec.shape) if spec.angle else None
     hint = hint or (_rotation_hint(v) if spec.rotation else None)
     if hint:
         return hint

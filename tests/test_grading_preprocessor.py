@@ -197,15 +197,19 @@ while time.time() - _t0 < {seconds}:
     sys.stdout.write("y" * 2**20 + "\\n"); sys.stdout.flush(); time.sleep(0.005)
 """
 
+# The grader's peak memory is its VmHWM (/proc/self/status), the high-water mark of its own
+# address space. Not ru_maxrss: Linux carries that across execve from the process that started
+# it, so under a full pytest run (its parent at 480 MB) it read 484 MB whatever the grader did.
 MEMORY = """\
-import json, resource, sys
+import json, sys
 sys.path.insert(0, {root!r})
 import nbformat
 from tests.test_grading_preprocessor import _confined_run
 cells = [nbformat.v4.new_code_cell({flood!r}), nbformat.v4.new_code_cell("print('after')")]
 nb = _confined_run(cells, timeout=60)
-print(json.dumps({{"outputs": [c.outputs for c in nb.cells],
-                  "maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss // 1024}}))
+status = open("/proc/self/status").read()
+hwm_kb = int(status.split("VmHWM:")[1].split()[0])
+print(json.dumps({{"outputs": [c.outputs for c in nb.cells], "maxrss_mb": hwm_kb // 1024}}))
 """
 
 

@@ -297,3 +297,19 @@ def test_the_command_line_fails_and_lists_the_hits(copy, needles, capsys):
     out = capsys.readouterr().out
     assert status == 1 and "  LEAK site/leak.txt:1: solution line of " in out
     assert out.startswith("leak gate: ") and out.splitlines()[0].endswith(": 1 hits")
+
+
+def test_regression_every_package_of_course_lib_is_in_the_wheel():
+    # course_lib.interactive became a package and the wheel's explicit package list missed it:
+    # in the Colab run the chapter's explorer cells failed (ModuleNotFoundError)
+    import tomllib
+
+    listed = set(
+        tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"]
+    )
+    found = {
+        ".".join(p.parent.relative_to(ROOT).parts)
+        for p in (ROOT / "course_lib").rglob("__init__.py")
+        if "__pycache__" not in p.parts
+    }
+    assert found == listed

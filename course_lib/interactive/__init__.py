@@ -20,52 +20,11 @@ ipympl figure that turns with the mouse, and its still picture where ipympl is m
 The maths is in :mod:`course_lib.rodrigues`, :mod:`course_lib.so3` and :mod:`course_lib.euler`.
 """
 
-from .animation import SPIN_PIXELS, spin_animation
-from .gimbal import (
-    PITCH_RANGE,
-    ROLL_RANGE,
-    YAW_RANGE,
-    draw_gimbal,
-    gimbal_explorer,
-    gimbal_readout,
-    rates_matrix,
-    turn_axes,
-)
-from .rotation import (
-    AZIMUTH_RANGE,
-    POLAR_RANGE,
-    Q0,
-    THETA_RANGE,
-    draw_rodrigues_terms,
-    draw_rotated_frame,
-    rodrigues_explorer,
-    rodrigues_readout,
-    rotation_explorer,
-)
-from .widgets import VIEW_AZIM, VIEW_ELEV, Explorer, SliderSpec
+from . import animation, gimbal, rotation, widgets
+from .animation import *  # noqa: F403
+from .gimbal import *  # noqa: F403
+from .rotation import *  # noqa: F403
+from .widgets import *  # noqa: F403
 
-__all__ = [
-    "POLAR_RANGE",
-    "AZIMUTH_RANGE",
-    "THETA_RANGE",
-    "Q0",
-    "VIEW_ELEV",
-    "VIEW_AZIM",
-    "rodrigues_readout",
-    "draw_rotated_frame",
-    "draw_rodrigues_terms",
-    "Explorer",
-    "SliderSpec",
-    "rotation_explorer",
-    "rodrigues_explorer",
-    "SPIN_PIXELS",
-    "spin_animation",
-    "YAW_RANGE",
-    "PITCH_RANGE",
-    "ROLL_RANGE",
-    "turn_axes",
-    "rates_matrix",
-    "gimbal_readout",
-    "draw_gimbal",
-    "gimbal_explorer",
-]
+# What each module exports, in the order of the table above: one list per module, kept there.
+__all__ = [*rotation.__all__, *widgets.__all__, *animation.__all__, *gimbal.__all__]

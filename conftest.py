@@ -1,13 +1,108 @@
-"""Root pytest hooks: every strict-nbval cell is a notebook_exec test.
+"""Root pytest hooks.
 
-nbval collects each notebook cell as a test item without markers, so `-m 'not notebook_exec'`
-used to keep all of them; with the marker added here it deselects notebook execution whole.
+- Every strict-nbval cell is a ``notebook_exec`` test: nbval collects each notebook cell as a
+  test item without markers, so ``-m 'not notebook_exec'`` used to keep all of them; with the
+  marker added here it deselects notebook execution whole.
+- A test that needs a system tool the machine may lack carries its marker (:data:`TOOLS`:
+  ``confined`` for bubblewrap, ``browser`` for Chromium, ``npm``). Without the tool the test is
+  skipped and the run ends with one line per tool: how many were skipped, why, and the command
+  that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run`` sets all three)
+  a missing tool fails those tests instead.
 """
 
+from __future__ import annotations
+
+import os
+import shutil
+from dataclasses import dataclass
+from functools import cache
+
 import pytest
+
+
+@dataclass(frozen=True)
+class Tool:
+    what: str  # the tool, as a person names it
+    needed_for: str
+    install: str
+    required_by: str  # the environment variable that turns a skip into a failure
+
+    def skip_reason(self, problem):
+        return f"needs {self.what} ({self.needed_for}): {problem}"
+
+
+TOOLS = {
+    "confined": Tool(
+        "bubblewrap (bwrap)",
+        "the confined kernel that grades students' code",
+        "sudo apt-get install bubblewrap (Debian/Ubuntu; Fedora: sudo dnf install bubblewrap; "
+        "Linux only)",
+        "CONFINED_REQUIRED",
+    ),
+    "browser": Tool(
+        "Chromium (/usr/bin/chromium)",
+        "the tests in a real browser",
+        "sudo apt-get install chromium",
+        "BROWSER_REQUIRED",
+    ),
+    "npm": Tool("npm", "the website's MathJax", "sudo apt-get install npm", "NPM_REQUIRED"),
+}
+
+
+@cache
+def missing(marker):
+    """Why the tool of ``marker`` cannot be used here, or None when it can."""
+    if marker == "confined":
+        return _confinement_problem()
+    if marker == "browser":
+        return None if os.access("/usr/bin/chromium", os.X_OK) else "/usr/bin/chromium not found"
+    if marker == "npm":
+        return None if shutil.which("npm") else "npm not found on PATH"
+    raise KeyError(marker)
+
+
+def _confinement_problem():
+    try:
+        from grader.sandbox import confinement_problem
+    except ImportError:  # the student edition has no grader/
+        return "the instructor's grader/ is not here"
+    return confinement_problem()
+
+
+def pytest_configure(config):
+    for name, tool in TOOLS.items():
+        config.addinivalue_line("markers", f"{name}: {tool.skip_reason('...')}")
 
 
 def pytest_collection_modifyitems(items):
     for item in items:
         if type(item).__name__ == "IPyNbCell":  # nbval's item class
             item.add_marker(pytest.mark.notebook_exec)
+
+
+def pytest_runtest_setup(item):
+    for name, tool in TOOLS.items():
+        if item.get_closest_marker(name) is None:
+            continue
+        problem = missing(name)
+        if problem is None:
+            continue
+        if os.environ.get(tool.required_by) == "1":
+            pytest.fail(f"{tool.required_by}=1, but this test {tool.skip_reason(problem)}")
+        pytest.skip(tool.skip_reason(problem))
+
+
+def pytest_terminal_summary(terminalreporter):
+    skipped = terminalreporter.stats.get("skipped", [])
+    for tool in TOOLS.values():
+        prefix = f"needs {tool.what} "
+        count = sum(prefix in str(getattr(r, "longrepr", "")) for r in skipped)
+        if count:
+            terminalreporter.write_line(
+                f"{count} tests skipped: they need {tool.what} for {tool.needed_for}, which "
+                f"is missing here; install it with: {tool.install} "
+                f"(set {tool.required_by}=1 to make this a failure)",
+                yellow=True,
+                bold=True,
+            )
+

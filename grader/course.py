@@ -34,6 +34,7 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
+from grader.sandbox import INSTALL, confinement_problem  # noqa: E402
 from tools import sync_exercises  # noqa: E402
 
 __all__ = ["problem_sets", "config_text", "write_course", "hidden_folders", "write_feedback_math"]
@@ -91,7 +92,13 @@ from nbgrader.preprocessors import (
     SaveAutoGrades,
 )
 
-from grader.preprocessor import CapOutput, ConfinedExecute, GuardCells, VerifyRecords
+from grader.preprocessor import (
+    CapOutput,
+    ConfinedExecute,
+    ConfinedExporter,
+    GuardCells,
+    VerifyRecords,
+)
 from grader.pages import InertStudentHTML
 
 c = get_config()  # noqa: F821
@@ -122,6 +129,10 @@ c.Autograde.autograde_preprocessors = [
 ]
 c.Execute.timeout = {timeout}  # seconds per cell
 c.ConfinedKernelManager.hide = {hide!r}
+# Without bubblewrap, autograde refuses to run students' code (it would run as you, with the
+# solutions and the gradebook in reach). Only for work you trust (docs/grading.md):
+# c.ConfinedKernelManager.unconfined = True
+c.Autograde.exporter_class = ConfinedExporter  # makes that refusal before anything is graded
 c.CapOutput.max_bytes = 100_000  # output text kept per cell (autograded notebook, feedback)
 c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on one whole line
 # Wherever nbgrader renders a submission as HTML (the formgrader page the instructor opens, the
@@ -245,6 +256,14 @@ def main(argv=None):
         print(f"make course: {err}", file=sys.stderr)
         return 2
     print(f"{args.course}: nbgrader_config.py and source/ for {', '.join(names)}")
+    problem = confinement_problem()
+    if problem:
+        print(
+            f"make course: no confined kernel on this machine ({problem}): `nbgrader autograde` "
+            f"will refuse to run students' code until bubblewrap is installed ({INSTALL}), "
+            "unless you opt in to unconfined grading (docs/grading.md)",
+            file=sys.stderr,
+        )
     if not (Path(args.course) / "templates" / FEEDBACK).is_dir():
         print(
             "make course: feedback loads MathJax from a CDN (run `make site` first, or pass "

@@ -17,6 +17,9 @@
 - When the kernel dies (``os._exit`` in an answer cell, a crash, the memory limit),
   :class:`ConfinedExecute` keeps what ran and gives every grade cell that did not run 0 with a
   note, instead of leaving the student without a grade.
+- :class:`ConfinedExporter` (``c.Autograde.exporter_class``) refuses the whole autograde run,
+  before any submission is touched, when the kernel cannot be confined here (no bubblewrap)
+  and the instructor has not opted in to unconfined grading.
 """
 
 from __future__ import annotations
@@ -28,8 +31,10 @@ import nbformat
 import zmq
 from jupyter_core.utils import run_sync
 from nbclient.exceptions import CellTimeoutError, DeadKernelError
+from nbconvert.exporters import NotebookExporter
 from nbgrader import utils
 from nbgrader.api import Gradebook, MissingEntry
+from nbgrader.converters.base import NbGraderException
 from nbgrader.nbgraderformat.v3 import MetadataValidatorV3
 from nbgrader.preprocessors import Execute, NbGraderPreprocessor
 from traitlets import Integer
@@ -37,10 +42,18 @@ from traitlets import Integer
 from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
-from .sandbox import ConfinedKernelManager
+from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
 from .verify import verdict
 
-__all__ = ["ConfinedExecute", "VerifyRecords", "GuardCells", "CapOutput", "note_output"]
+__all__ = [
+    "ConfinedExecute",
+    "ConfinedExporter",
+    "VerifyRecords",
+    "GuardCells",
+    "CapOutput",
+    "note_output",
+    "refusal",
+]
 
 SUFFIX = "-check"
 ZERO = "rotations_course_zero"  # cell metadata: the note of a grade cell put back with 0
@@ -51,6 +64,39 @@ def note_output(note):
     return nbformat.v4.new_output(
         "error", ename="GradingNote", evalue=note, traceback=[f"GradingNote: {note}"]
     )
+
+
+def refusal(problem):
+    """What ``nbgrader autograde`` says when it will not run students' code unconfined."""
+    return (
+        f"refusing to run students' code: the confined grading kernel needs bubblewrap, and "
+        f"{problem}. Unconfined, a submission runs as you: it can read the solutions "
+        f"(tools/solutions), other submissions and the gradebook, and change them. Install "
+        f"bubblewrap ({INSTALL}; Linux only) and run the command again. Or, only for work you "
+        f"trust, grade without confinement: add --ConfinedKernelManager.unconfined=True to "
+        f"the command, or set c.ConfinedKernelManager.unconfined = True in nbgrader_config.py "
+        f"(docs/grading.md, 'Grading without bubblewrap'). Nothing was graded: submitted/, "
+        f"autograded/ and gradebook.db are as they were."
+    )
+
+
+class ConfinedExporter(NotebookExporter):
+    """Autograde's exporter: it is made once, before the first submission is read, so a
+    refusal here stops the run with nothing half-graded (a refusal per notebook would have
+    let nbgrader remove each student's earlier autograded copy, under ``--force``)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        problem = confinement_problem()
+        if ConfinedKernelManager.unconfined_in(self.config):
+            self.log.warning(
+                "grading UNCONFINED (ConfinedKernelManager.unconfined = True): students' code "
+                "runs as you, with your files (%s)",
+                problem or "bubblewrap is here, but not used",
+            )
+        elif problem:
+            self.log.error(refusal(problem))
+            raise NbGraderException(refusal(problem))
 
 
 class ConfinedExecute(Execute):

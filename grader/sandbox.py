@@ -32,6 +32,14 @@ Debian's ``bubblewrap`` (``bwrap``) with an **allow-list** view of the machine:
 
 Run as ``python sandbox.py --scratch DIR --expose DIR ... -- -f FILE`` (the kernel manager
 does); it only uses the standard library.
+
+**Without bubblewrap** (macOS, Windows, a Linux machine without it or without user namespaces)
+there is no confinement: :func:`confinement_problem` says why, and ``nbgrader autograde``
+refuses to run students' code (:class:`grader.preprocessor.ConfinedExporter`) unless the
+instructor opts in with ``ConfinedKernelManager.unconfined = True``. Then the kernel runs as
+the instructor (``--unconfined``): the same cleared environment, ``-P``, the installed
+``course_lib`` imported first and the address-space and file-size limits, but it can read and
+write whatever the instructor can.
 """
 
 from __future__ import annotations
@@ -40,11 +48,21 @@ import argparse
 import os
 import resource
 import shutil
+import subprocess
 import sys
 import tempfile
+from functools import cache
 from pathlib import Path
 
-__all__ = ["ConfinedKernelManager", "bwrap_command", "kernel_env", "BOOT", "LIMITS"]
+__all__ = [
+    "ConfinedKernelManager",
+    "bwrap_command",
+    "confinement_problem",
+    "kernel_env",
+    "BOOT",
+    "INSTALL",
+    "LIMITS",
+]
 
 SCRATCH = "/tmp/work"
 TMP_BYTES = 256 * 2**20
@@ -60,6 +78,8 @@ LIMITS = {
     "RLIMIT_NPROC": 64,
     "RLIMIT_CORE": 0,
 }
+#: How to install bubblewrap, for the messages that say it is missing.
+INSTALL = "sudo apt-get install bubblewrap (Debian, Ubuntu; Fedora: sudo dnf install bubblewrap)"
 #: The system folders mounted read-only (or re-created as the same symbolic links).
 SYSTEM = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32")
 #: The files of /etc the kernel may read (no secrets: the loader, time zone, users, fonts).
@@ -75,19 +95,46 @@ BOOT = (
 )
 
 
-def kernel_env(path=(), prefix=sys.prefix):
-    """The kernel's whole environment."""
+def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH):
+    """The kernel's whole environment (``work``: its working directory and ``HOME``)."""
     return {
         "PATH": f"{prefix}/bin:/usr/bin:/bin",
         "LANG": "C.UTF-8",
-        "HOME": SCRATCH,
-        "IPYTHONDIR": f"{SCRATCH}/.ipython",
-        "MPLCONFIGDIR": f"{SCRATCH}/.matplotlib",
+        "HOME": work,
+        "IPYTHONDIR": f"{work}/.ipython",
+        "MPLCONFIGDIR": f"{work}/.matplotlib",
         "PYTHONSAFEPATH": "1",
         "PYTHONDONTWRITEBYTECODE": "1",
-        "JUPYTER_RUNTIME_DIR": f"{SCRATCH}/.runtime",
+        "JUPYTER_RUNTIME_DIR": f"{work}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
     }
+
+
+@cache
+def confinement_problem():
+    """Why the confined kernel cannot start on this machine, or None when it can.
+
+    bubblewrap must be on ``PATH`` and able to make the sandbox's namespaces here (a kernel
+    may forbid unprivileged user namespaces: bwrap is then installed but fails).
+
+    Examples
+    --------
+    >>> confinement_problem() is None or "bwrap" in confinement_problem()
+    True
+    """
+    bwrap = shutil.which("bwrap")
+    if bwrap is None:
+        return "bwrap is not on PATH"
+    probe = [bwrap, "--unshare-all", "--die-with-parent", "--ro-bind", "/", "/"]
+    probe += ["--proc", "/proc", "--dev", "/dev", sys.executable, "-S", "-c", ""]
+    try:
+        done = subprocess.run(probe, capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.SubprocessError) as exc:
+        return f"bwrap could not be started: {exc}"
+    if done.returncode != 0:
+        why = (done.stderr.strip().splitlines() or ["no message"])[-1][:200]
+        return f"bwrap is installed but cannot make a sandbox here: {why}"
+    return None
 
 
 def _system():
@@ -125,9 +172,21 @@ def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
     return cmd + ["--", python, "-P", "-c", BOOT, *kernel_args]
 
 
-def _limit():
+def _limit(unconfined=False):
     for name, value in LIMITS.items():
+        if unconfined and name == "RLIMIT_NPROC":
+            continue  # counted over all the instructor's processes, not the kernel's own
         resource.setrlimit(getattr(resource, name), (value, value))
+
+
+def _exec_unconfined(scratch, kernel, python, path):
+    """The kernel without bubblewrap (the instructor opted in): it runs as the instructor."""
+    work = os.path.join(scratch, "work")
+    os.makedirs(work, exist_ok=True)
+    os.chdir(work)
+    _limit(unconfined=True)
+    env = kernel_env(path, work=work)
+    os.execve(python, [python, "-P", "-c", BOOT, *kernel], env)
 
 
 def main(argv=None):
@@ -137,13 +196,17 @@ def main(argv=None):
     parser.add_argument("--scratch", required=True)
     parser.add_argument("--python", default=sys.executable)
     parser.add_argument("--pythonpath", action="append", default=[])
+    parser.add_argument("--unconfined", action="store_true", help="no bubblewrap (opted in)")
     parser.add_argument("kernel", nargs=argparse.REMAINDER)
     args = parser.parse_args(argv)
     kernel = args.kernel[1:] if args.kernel[:1] == ["--"] else args.kernel
-    if shutil.which("bwrap") is None:
-        print("grader.sandbox: bwrap not found (apt-get install -y bubblewrap)", file=sys.stderr)
-        return 2
     quiet = os.open(os.devnull, os.O_WRONLY)  # ipykernel's banner; errors still go to stderr
+    if args.unconfined:
+        os.dup2(quiet, 1)
+        _exec_unconfined(args.scratch, kernel, args.python, args.pythonpath)
+    if shutil.which("bwrap") is None:
+        print(f"grader.sandbox: bwrap not found: {INSTALL}", file=sys.stderr)
+        return 2
     os.dup2(quiet, 1)
     cmd = bwrap_command(args.expose, args.scratch, kernel, args.python, args.pythonpath)
     _limit()
@@ -157,7 +220,8 @@ if __name__ == "__main__":
 else:  # imported by nbgrader (the instructor's process): the kernel manager
     from jupyter_client import AsyncKernelManager
     from jupyter_client.kernelspec import KernelSpec
-    from traitlets import List, Unicode
+    from traitlets import Bool, List, Unicode
+    from traitlets.config.loader import DeferredConfig
 
     class ConfinedKernelManager(AsyncKernelManager):
         """A kernel manager that always starts the confined kernel, whatever the notebook's
@@ -170,6 +234,21 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
             "is inside one (but for the installed course_lib and the Python environment), "
             "is an error.",
         ).tag(config=True)
+        unconfined = Bool(
+            False,
+            help="Run the kernel without bubblewrap: students' code runs as you and can read "
+            "and change whatever you can (the solutions, the gradebook). Only for a machine "
+            "without bubblewrap, and work you trust (docs/grading.md).",
+        ).tag(config=True)
+
+        @classmethod
+        def unconfined_in(cls, config):
+            """Whether traitlets ``config`` opts in to unconfined grading (from a config file,
+            or the command line, where the value arrives as text)."""
+            value = config.get(cls.__name__, {}).get("unconfined", False)
+            if isinstance(value, DeferredConfig):
+                value = value.get_value(cls.class_traits()["unconfined"])
+            return value is True
 
         def __init__(self, **kwargs):
             kwargs["transport"] = "ipc"
@@ -198,7 +277,8 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
                 argv += [f"--expose={p}" for p in self._expose()]
                 lib = Path(course_lib.__file__).resolve().parent
                 argv += [f"--pythonpath={lib.parent}", "--python", sys.executable]
-                argv += [f"--scratch={self.scratch}", "--", "-f", "{connection_file}"]
+                argv += [f"--scratch={self.scratch}"] + ["--unconfined"] * self.unconfined
+                argv += ["--", "-f", "{connection_file}"]
                 self._kernel_spec = KernelSpec(
                     argv=argv,
                     display_name="Python 3 (confined)",

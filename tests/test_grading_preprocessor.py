@@ -4,7 +4,6 @@ grading metadata a student added, and a kernel that dies in an answer cell (issu
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 import time
@@ -17,6 +16,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from course_lib.student import nbgrader_metadata  # noqa: E402
 from grader import preprocessor as P  # noqa: E402
+from grading_helpers import TRUSTED_CONFIG  # noqa: E402
 
 
 def _stream(text):
@@ -82,8 +82,6 @@ def test_released_cells_are_left_alone():
 
 def test_os_exit_in_an_answer_cell_gives_the_grade_cells_after_it_0_with_a_note(tmp_path):
     """The kernel died and nbgrader left the student without any grade."""
-    if shutil.which("bwrap") is None:
-        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
     before = _cell("a-check", grade=True, locked=True, points=1)
     before.source = "print('ran')"
     killer = nbformat.v4.new_code_cell("import os; os._exit(0)")
@@ -94,7 +92,7 @@ def test_os_exit_in_an_answer_cell_gives_the_grade_cells_after_it_0_with_a_note(
         "display_name": "Python 3",
         "language": "python",
     }
-    ex = P.ConfinedExecute(timeout=60)
+    ex = P.ConfinedExecute(timeout=60, config=TRUSTED_CONFIG)
     nb, _ = ex.preprocess(nb, {"metadata": {"path": str(tmp_path)}})
     assert [o.output_type for o in nb.cells[0].outputs] == ["stream"]
     (note,) = nb.cells[2].outputs
@@ -158,15 +156,13 @@ def test_well_formed_metadata_is_left_to_the_other_checks():
 
 
 def _confined_run(cells, timeout):
-    if shutil.which("bwrap") is None:
-        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
     nb = nbformat.v4.new_notebook(cells=cells)
     nb.metadata["kernelspec"] = {
         "name": "python3",
         "display_name": "Python 3",
         "language": "python",
     }
-    ex = P.ConfinedExecute(timeout=timeout)
+    ex = P.ConfinedExecute(timeout=timeout, config=TRUSTED_CONFIG)
     return ex.preprocess(nb, {"metadata": {"path": "/tmp"}})[0]
 
 
@@ -202,7 +198,7 @@ while time.time() - _t0 < {seconds}:
 # it, so under a full pytest run (its parent at 480 MB) it read 484 MB whatever the grader did.
 MEMORY = """\
 import json, sys
-sys.path.insert(0, {root!r})
+sys.path[:0] = [{root!r}, {root!r} + "/tests"]
 import nbformat
 from tests.test_grading_preprocessor import _confined_run
 cells = [nbformat.v4.new_code_cell({flood!r}), nbformat.v4.new_code_cell("print('after')")]

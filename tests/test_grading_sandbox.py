@@ -25,6 +25,8 @@ sys.path.insert(0, str(ROOT))
 import course_lib  # noqa: E402
 from grader import sandbox  # noqa: E402
 
+confined = pytest.mark.confined  # the confinement itself: needs bubblewrap
+
 MARKER = "ROTATIONS_GRADER_SECRET_7f3c"
 
 PROBE = """\
@@ -111,8 +113,6 @@ async def _run_confined(code, hide):
 
 @pytest.fixture(scope="module")
 def probe(tmp_path_factory):
-    if shutil.which("bwrap") is None:
-        pytest.fail("bubblewrap is needed for the confined kernel: apt-get install -y bubblewrap")
     tmp = tmp_path_factory.mktemp("outside")
     solutions = tmp / "other-checkout" / "tools" / "solutions"
     solutions.mkdir(parents=True)
@@ -153,6 +153,7 @@ def _accept(server, accepted):
         pass
 
 
+@confined
 def test_other_checkouts_solutions_and_the_repository_are_not_in_the_kernels_view(probe):
     out, _, _ = probe
     assert out["solutions"] == "refused FileNotFoundError", out
@@ -160,29 +161,34 @@ def test_other_checkouts_solutions_and_the_repository_are_not_in_the_kernels_vie
     assert out["exchange"] == "refused FileNotFoundError", out  # nbgrader's exchange
 
 
+@confined
 def test_the_grading_users_jupyter_runtime_folder_is_not_in_the_kernels_view(probe):
     out, _, _ = probe
     assert out["graders_runtime"] == "refused FileNotFoundError", out
 
 
+@confined
 def test_no_tcp_to_the_hosts_loopback(probe):
     out, accepted, _ = probe
     assert out["tcp"].startswith("refused "), out
     assert not accepted
 
 
+@confined
 def test_the_graders_environment_is_not_in_proc_1_or_the_kernel(probe):
     out, _, _ = probe
     assert MARKER not in out["environ1"] and MARKER not in out["environ"], out
     assert out["environ1"] != "refused FileNotFoundError"  # /proc is the sandbox's own
 
 
+@confined
 def test_a_connection_file_of_an_outside_kernel_cannot_be_read(probe):
     out, _, _ = probe
     assert out["connection"] == "refused FileNotFoundError", out
     assert out["runtime"] == "refused FileNotFoundError", out
 
 
+@confined
 def test_the_installed_course_lib_is_imported_read_only_and_limits_hold(probe):
     out, _, scratch = probe
     assert out["course_lib"] == course_lib.__file__
@@ -210,6 +216,7 @@ def test_regression_a_venv_under_tmp_is_mounted_over_the_sandboxs_own_tmp():
     assert binds and all(i > tmpfs for i in binds)
 
 
+@confined
 def test_dev_shm_dev_and_scratch_writes_are_bounded_regression_attack_6b(probe):
     """/dev and /dev/shm were tmpfs of half the RAM (11.8 GiB here, not counted by
     RLIMIT_AS) and the scratch folder a writable host folder on the host's disk."""
@@ -225,6 +232,7 @@ def test_dev_shm_dev_and_scratch_writes_are_bounded_regression_attack_6b(probe):
         assert out["chmod_scratch"].startswith("refused"), out
 
 
+@confined
 def test_the_process_limit_binds_only_when_the_grader_is_not_root(probe):
     """RLIMIT_NPROC does not bind uid 0 (Linux exempts the host's root user, also inside a
     user namespace, also with bwrap's --uid 1000: the kernel's host uid stays 0). Measured

@@ -27,6 +27,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from course_lib.exercises import exercises  # noqa: E402
 from grader.course import write_course  # noqa: E402
+from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 NBGRADER = Path(sys.executable).with_name("nbgrader")
@@ -76,7 +77,7 @@ def graded(course):
         dest = course / "submitted" / student / "exercises"
         shutil.copytree(src / "exercises", dest)
         (dest / "timestamp.txt").write_text("2026-01-01 00:00:00.000000 UTC")
-    code, out = run(["autograde", "exercises", "--force", "--create"], course)
+    code, out = run(["autograde", "exercises", "--force", "--create", *TRUSTED_AUTOGRADE], course)
     assert code == 0, out
     return course
 

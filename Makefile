@@ -90,7 +90,7 @@ bench: $(STAMP)
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
 # and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
-LINT_PATHS := course_lib grader release site tests benchmarks e2e tools notebooks problem_sets
+LINT_PATHS := conftest.py course_lib grader release site tests benchmarks e2e tools notebooks problem_sets
 lint: $(STAMP)
 	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
 	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))

@@ -105,4 +105,3 @@ def pytest_terminal_summary(terminalreporter):
                 yellow=True,
                 bold=True,
             )
-

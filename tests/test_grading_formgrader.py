@@ -26,8 +26,9 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-from grader.course import write_course  # noqa: E402
 from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
+
+from grader.course import write_course  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 BIN = Path(sys.executable).parent
@@ -134,7 +135,8 @@ def graded(tmp_path_factory):
     js = root.parent / "tex-svg.js"
     js.write_text("window.ROTATIONS_FAKE_MATHJAX = 1;\n")
     write_course(root, mathjax=js)  # the feedback template configured, as after `make site`
-    for args in (["generate_assignment", PS, "--create"], None, ["autograde", PS, "--create", *TRUSTED_AUTOGRADE]):
+    autograde = ["autograde", PS, "--create", *TRUSTED_AUTOGRADE]
+    for args in (["generate_assignment", PS, "--create"], None, autograde):
         if args is None:
             hand_in(root)
             continue

@@ -14,9 +14,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+from grading_helpers import TRUSTED_CONFIG  # noqa: E402
+
 from course_lib.student import nbgrader_metadata  # noqa: E402
 from grader import preprocessor as P  # noqa: E402
-from grading_helpers import TRUSTED_CONFIG  # noqa: E402
 
 
 def _stream(text):

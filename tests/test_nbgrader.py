@@ -25,9 +25,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
+
 from course_lib.exercises import exercises  # noqa: E402
 from grader.course import write_course  # noqa: E402
-from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 NBGRADER = Path(sys.executable).with_name("nbgrader")

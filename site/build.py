@@ -54,6 +54,12 @@ def install_scripts():
     """MathJax's es5 bundle from npm, in build/site-deps/static/, with the site's own CSS."""
     modules = DEPS / "node_modules"
     if not (modules / "mathjax" / "es5" / "tex-chtml.js").is_file():
+        if shutil.which("npm") is None:
+            raise SystemExit(
+                f"make site: npm not found on PATH; the site serves MathJax itself, installed "
+                f"once from npm ({MATHJAX}). Install Node.js with npm (Debian/Ubuntu: sudo "
+                f"apt-get install npm; macOS: brew install node) and run it again."
+            )
         subprocess.run(
             [
                 "npm",

@@ -26,8 +26,12 @@ lab: $(STAMP)
 	@echo "Opening the course on notebooks/: the URL to open (with its token) is printed below."
 	$(BIN)/jupyter lab --ServerApp.root_dir=notebooks --LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate $(ROOT_FLAG) $(LAB_ARGS)
 
+# Two pytest workers by default (`make test JOBS=1`: one); a notebook's cells run in order in
+# one worker (--dist loadfile); pyproject's testpaths list the notebooks first, so the longest
+# files start early. docs/testing.md: the time of each part.
+JOBS ?= 2
 test: $(STAMP)
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile
 
 # Unit, property and doctests without executing any notebook (nbval cells are notebook_exec too).
 test-fast: $(STAMP)

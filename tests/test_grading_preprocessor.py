@@ -221,7 +221,8 @@ def test_flushed_output_flood_is_capped_while_it_arrives_not_held_in_the_grader(
     assert proc.returncode == 0, proc.stderr[-3000:]
     out = json.loads(proc.stdout.splitlines()[-1])
     flood, after = out["outputs"]
-    assert after[0]["text"] == "after\n"
+    # the kernel may send print's "after" and its newline as two messages on a loaded machine
+    assert "".join(o["text"] for o in after if o["output_type"] == "stream") == "after\n"
     note = flood[-1]["text"]
     assert "bytes of output cut while the cell ran" in note, flood
     cut = int(note.split("GradingNote: ")[1].split()[0])

@@ -4,8 +4,9 @@ autograde`` with the course's configuration, written as Gradescope's ``results.j
     python grader/gradescope_run.py prepare      # setup.sh, once per image
     python grader/gradescope_run.py grade        # run_autograder, once per submission
 
-``prepare`` makes an nbgrader course directory ``<root>/course`` (:func:`grader.course.write_course`,
-then ``nbgrader generate_assignment``) from the problem set shipped in ``<root>/source``.
+``prepare`` makes an nbgrader course directory ``<root>/course``
+(:func:`grader.course.write_course`, then ``nbgrader generate_assignment``) from the problem
+set shipped in ``<root>/source``.
 ``grade`` copies ``<root>/submission/*.ipynb`` into ``course/submitted/<student_id>/psNN/``,
 runs ``nbgrader autograde psNN --student=<student_id>`` (the confined kernel,
 :class:`grader.preprocessor.VerifyRecords`: the same code path, so the same points as
@@ -245,7 +246,9 @@ def _autograde(course, ps, student, budget):
         cmd,
         cwd=course,
         env=_env(),
-        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, start_new_session=True
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        start_new_session=True,
     )
     try:
         out, _ = proc.communicate(timeout=budget)
@@ -304,7 +307,9 @@ def _grade(top, started, budget):
     if code is None:
         return failure(f"0 points: {log}; the cells of your notebook ran too long.", started)
     if code != 0:
-        return failure("the autograder could not grade this notebook; tell your instructor.", started)
+        return failure(
+            "the autograder could not grade this notebook; tell your instructor.", started
+        )
     return results_for(course, ps, student, started)
 
 

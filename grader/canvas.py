@@ -27,6 +27,7 @@ from __future__ import annotations
 import argparse
 import csv
 import io
+import os
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -90,6 +91,9 @@ def export(course, assignments=None, roster=None):
     """An :class:`Export` of the gradebook of the course directory ``course``."""
     from nbgrader.api import Gradebook, MissingEntry
 
+    bin_dir = str(Path(sys.executable).parent)  # nbgrader runs alembic from PATH
+    if bin_dir not in os.environ.get("PATH", "").split(os.pathsep):
+        os.environ["PATH"] = f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}"
     db = Path(course) / "gradebook.db"
     if not db.is_file():
         raise ValueError(f"COURSE: no gradebook.db in {course} (run nbgrader autograde first)")

@@ -230,15 +230,21 @@ except OSError as err:
 
 def test_student_code_sees_no_autograder_file_and_cannot_write_results(autograder):
     """A notebook that lists and prints /autograder (the solutions are in source/) and writes
-    results/results.json itself: nothing of the root is in the kernel's view."""
+    results/results.json itself: nothing of the root but course_lib is in the kernel's view."""
     _, nb = notebook(autograder, "blank")
     attack = ATTACK.format(top=str(autograder), results=str(autograder / "results"))
     results = run_autograder(autograder, "s_attack", _prefix_first_answer(nb, attack))
     assert results["score"] == 0 and "pwned" not in json.dumps(results), results
     graded = autograder / "course" / "autograded" / "s_attack" / PS
     text = next(graded.glob("*.ipynb")).read_text()
-    assert "SEEN 0 []" in text, text[:3000]
+    seen = text.split("SEEN ", 1)[1].split("\\n", 1)[0]
+    # in view: the installed course_lib only (what students have anyway), here the zip's copy
+    # that the grader imports; never tools/solutions, the problem set, course/ or results/
+    for name in ("tools", "problem_sets", "course", "results", "grader"):
+        assert f"{autograder}/{name}/" not in seen and f"source/{name}/" not in seen, seen
     assert "SOLUTIONS" not in text and "BEGIN SOLUTION" not in text
+    # what it wrote landed in the sandbox's own /tmp; the real results.json is the grader's
+    assert "pwned" not in (autograder / "results" / "results.json").read_text()
     no_leak(results)
 
 

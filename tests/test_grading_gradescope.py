@@ -268,3 +268,67 @@ def test_zip_holds_the_secret_members_and_nothing_else_leaks(tmp_path):
     # a solution line outside the SECRET members is caught
     files["grader/extra.txt"] = files[next(n for n in names if n.startswith("tools/solutions/"))]
     assert gradescope.leak_check(files)
+
+
+def _five(top):
+    """Five submissions: solved, blank, one wrong, every other answer, a check cell deleted."""
+    name, solved = notebook(top, "solved")
+    _, blank = notebook(top, "blank")
+    wrong = nbformat.from_dict(json.loads(json.dumps(solved)))
+    cell = next(c for c in wrong.cells if c.id == "unit_tangent-answer")
+    cell.source += "\nanswer_unit_tangent = None\n"
+    half = nbformat.from_dict(json.loads(json.dumps(blank)))
+    answers = [i for i, c in enumerate(half.cells) if c.id.endswith("-answer")]
+    for i in answers[::2]:
+        half.cells[i] = solved.cells[i]
+    deleted = nbformat.from_dict(json.loads(json.dumps(solved)))
+    deleted.cells = [c for c in deleted.cells if c.id != "bac_cab-check"]
+    return name, {
+        "p_solved": solved,
+        "p_blank": blank,
+        "p_wrong": wrong,
+        "p_half": half,
+        "p_deleted": deleted,
+    }
+
+
+def test_same_points_as_nbgrader_autograde_of_make_course(autograder, tmp_path):
+    """The same 5 submissions through `make course` + `nbgrader autograde` and through
+    run_autograder: the same points for every exercise."""
+    from nbgrader.api import Gradebook
+
+    from grader.course import write_course
+
+    course = tmp_path / "course"
+    write_course(course)
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}"}
+    nbgrader = str(Path(sys.executable).with_name("nbgrader"))
+
+    def run(*args):
+        done = subprocess.run(
+            [nbgrader, *args], cwd=course, env=env, capture_output=True, text=True
+        )
+        assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+
+    run("generate_assignment", PS, "--create")
+    name, subs = _five(autograder)
+    for sid, nb in subs.items():
+        dest = course / "submitted" / sid / PS
+        dest.mkdir(parents=True)
+        nbformat.write(nb, dest / name)
+    run("autograde", PS, "--create")
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        by_nbgrader = {
+            sid: {
+                g.name.removesuffix("-check"): g.score
+                for nb in gb.find_submission(PS, sid).notebooks
+                for g in nb.grades
+            }
+            for sid in subs
+        }
+    for sid, nb in subs.items():
+        got = scores(run_autograder(autograder, sid, nb))
+        assert got == by_nbgrader[sid], (sid, got, by_nbgrader[sid])
+    assert sum(by_nbgrader["p_solved"].values()) == TOTAL
+    assert sum(by_nbgrader["p_blank"].values()) == 0
+    assert 0 < sum(by_nbgrader["p_half"].values()) < TOTAL

@@ -137,3 +137,23 @@ course: $(STAMP)
 # per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
 bench-grade: $(STAMP)
 	$(BIN)/python benchmarks/bench_grade.py --students 20 --jobs 2
+
+# Gradescope and Canvas (docs/grading.md): an autograder zip per problem set in build/gradescope/
+# (UNCONFINED=1: run submissions even where bubblewrap cannot confine them), the Canvas gradebook
+# CSV from an nbgrader course directory, the time of run_autograder, and their tests.
+.PHONY: gradescope grades-canvas bench-gradescope test-gradescope
+ASSIGNMENT ?=
+ROSTER     ?=
+UNCONFINED ?=
+gradescope: $(STAMP)
+	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined)
+
+grades-canvas: $(STAMP)
+	@test -n "$(COURSE)" || { echo "usage: make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv]"; exit 2; }
+	$(BIN)/python -m grader.canvas $(COURSE) $(if $(ASSIGNMENT),--assignment $(ASSIGNMENT)) $(if $(ROSTER),--roster $(ROSTER))
+
+bench-gradescope: $(STAMP)
+	$(BIN)/python benchmarks/bench_gradescope.py
+
+test-gradescope: $(STAMP)
+	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q

@@ -231,6 +231,17 @@ def _grade_id(cell):
     return meta.get("grade_id", "") if isinstance(meta, dict) else ""
 
 
+HINT = "The check said: "
+
+
+def _hint(cell):
+    """The hint of the kernel-side check (its ``CheckFailed`` line), shortened, or ''."""
+    for out in cell.get("outputs", []):
+        if out.get("output_type") == "error" and out.get("ename") == "CheckFailed":
+            return str(out.get("evalue", ""))[:500]
+    return ""
+
+
 def _records(cell):
     return [o for o in cell.get("outputs", []) if MIME in o.get("data", {})]
 
@@ -257,7 +268,11 @@ class VerifyRecords(NbGraderPreprocessor):
             return cell, resources
         result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])))
         if not result.ok:
-            cell.outputs = [note_output(f"{name}: 0 points from the grader: {result.note}.")]
+            note = note_output(f"{name}: 0 points from the grader: {result.note}.")
+            hint = _hint(cell)
+            if hint:  # the student's own check's hint, shown after the note (feedback, Gradescope)
+                note.traceback.append(f"{HINT}{hint}")
+            cell.outputs = [note]
         elif not failed:  # nothing in the outputs may read as a score: no execute_result
             cell.outputs = [
                 o

@@ -1,0 +1,182 @@
+"""``make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=export.csv]``: nbgrader's grades
+as a CSV that Canvas's gradebook import takes.
+
+    python -m grader.canvas DIR [--assignment psNN ...] [--roster canvas-export.csv] [--out F]
+
+Canvas imports a CSV laid out like its own gradebook export: the columns ``Student``, ``ID``,
+``SIS User ID``, ``SIS Login ID``, ``Section`` (a student is matched by ``ID``, the Canvas user
+id, or by an SIS id), then one column per assignment (``Name (canvas id)`` updates that
+assignment, a new name makes a new one), and a second row ``Points Possible``. A blank score
+changes nothing in Canvas.
+
+The scores come from ``DIR/gradebook.db`` through nbgrader's :class:`nbgrader.api.Gradebook`.
+With ``--roster`` (the instructor's Canvas gradebook export, the recommended way), each nbgrader
+student id is matched to a roster row by ``SIS User ID``, ``SIS Login ID``, ``ID`` or the
+student's e-mail, and the roster's own identity columns and assignment column names
+(``ps01 (12345)``) are used. Without it, ``ID`` is nbgrader's ``lms_user_id`` and ``SIS User
+ID`` the nbgrader id.
+
+Nothing is silently zero: a student of the roster or the gradebook with no submission of an
+assignment gets a **blank** cell and is listed as missing; a graded nbgrader student that no
+roster row matches is left out of the CSV and listed as unknown. The list goes to stderr and
+to the report file beside the CSV.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import os
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+__all__ = ["Export", "export", "read_roster", "write_csv", "IDENTITY"]
+
+IDENTITY = ("Student", "ID", "SIS User ID", "SIS Login ID", "Section")
+POINTS_ROW = "Points Possible"
+
+
+@dataclass
+class Export:
+    """The CSV's rows, and what could not be exported as a score."""
+
+    header: list
+    rows: list
+    missing: list = field(default_factory=list)  # (student, assignment)
+    unknown: list = field(default_factory=list)  # nbgrader ids no roster row matches
+
+    def report(self):
+        """The lines of the report: every missing submission and unknown student."""
+        lines = [f"{len(self.rows) - 1} students, {len(self.header) - len(IDENTITY)} assignments"]
+        lines += [
+            f"missing submission: {who} has no {ps} (blank, not 0)" for who, ps in self.missing
+        ]
+        lines += [
+            f"unknown student: {sid} is graded in nbgrader but not in the roster"
+            for sid in self.unknown
+        ]
+        return lines
+
+
+def read_roster(path):
+    """The rows of a Canvas gradebook export (dicts), without its ``Points Possible`` row."""
+    text = Path(path).read_text(encoding="utf-8-sig")
+    reader = csv.DictReader(io.StringIO(text))
+    missing = [c for c in IDENTITY[:2] if c not in (reader.fieldnames or [])]
+    if missing:
+        raise ValueError(f"roster: {path} is not a Canvas gradebook export (no {missing} column)")
+    rows = [r for r in reader if POINTS_ROW not in (r.get("Student") or "")]
+    return reader.fieldnames, rows
+
+
+def _column(ps, fieldnames):
+    """The roster's column of assignment ``ps`` (``ps01 (12345)``), else ``ps`` itself."""
+    for name in fieldnames or ():
+        if name == ps or name.startswith(f"{ps} ("):
+            return name
+    return ps
+
+
+def _match(student, rows):
+    keys = {student.id, student.email or ""} - {""}
+    for row in rows:
+        if keys & {row.get("SIS User ID"), row.get("SIS Login ID"), row.get("ID")}:
+            return row
+    return None
+
+
+def export(course, assignments=None, roster=None):
+    """An :class:`Export` of the gradebook of the course directory ``course``."""
+    from nbgrader.api import Gradebook, MissingEntry
+
+    bin_dir = str(Path(sys.executable).parent)  # nbgrader runs alembic from PATH
+    if bin_dir not in os.environ.get("PATH", "").split(os.pathsep):
+        os.environ["PATH"] = f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}"
+    db = Path(course) / "gradebook.db"
+    if not db.is_file():
+        raise ValueError(f"COURSE: no gradebook.db in {course} (run nbgrader autograde first)")
+    fields, rows = read_roster(roster) if roster else (None, None)
+    with Gradebook(f"sqlite:///{db}") as gb:
+        known = {a.name: a for a in gb.assignments}
+        names = list(assignments or sorted(known))
+        for ps in names:
+            if ps not in known:
+                raise ValueError(f"ASSIGNMENT: {ps!r} is not in the gradebook ({sorted(known)})")
+        cols = [_column(ps, fields) for ps in names]
+        out = Export([*IDENTITY, *cols], [[POINTS_ROW, "", "", "", ""]])
+        out.rows[0] += [f"{known[ps].max_score:g}" for ps in names]
+        scores = {}
+        for student in gb.students:
+            for ps in names:
+                try:
+                    scores[student.id, ps] = gb.find_submission(ps, student.id).score
+                except MissingEntry:
+                    pass
+        people = []
+        for student in gb.students:
+            row = _match(student, rows) if rows is not None else None
+            if rows is not None and row is None:
+                if any((student.id, ps) in scores for ps in names):
+                    out.unknown.append(student.id)
+                continue
+            name = f"{student.last_name or ''}, {student.first_name or ''}".strip(", ")
+            ident = (
+                [row.get(c, "") for c in IDENTITY]
+                if row
+                else [name or student.id, student.lms_user_id or "", student.id, "", ""]
+            )
+            people.append((ident, student.id))
+        if rows is not None:
+            taken = {tuple(ident) for ident, _ in people}
+            people += [
+                ([r.get(c, "") for c in IDENTITY], None)
+                for r in rows
+                if tuple(r.get(c, "") for c in IDENTITY) not in taken
+            ]
+        for ident, sid in people:
+            cells = []
+            for ps in names:
+                score = scores.get((sid, ps))
+                if score is None:
+                    out.missing.append((ident[0] or sid, ps))
+                cells.append("" if score is None else f"{score:g}")
+            out.rows.append([*ident, *cells])
+    return out
+
+
+def write_csv(result, path):
+    """Write the CSV (UTF-8, header then ``Points Possible`` then one row per student)."""
+    with open(path, "w", newline="", encoding="utf-8") as f:
+        writer = csv.writer(f)
+        writer.writerow(result.header)
+        writer.writerows(result.rows)
+    return Path(path)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("course", metavar="DIR", help="an nbgrader course directory")
+    parser.add_argument("--assignment", action="append", help="psNN (default: every one)")
+    parser.add_argument("--roster", help="the course's Canvas gradebook export (CSV)")
+    parser.add_argument("--out", help="the CSV to write (default: DIR/canvas-grades.csv)")
+    args = parser.parse_args(argv)
+    try:
+        result = export(args.course, args.assignment, args.roster)
+    except (OSError, ValueError) as err:
+        print(f"make grades-canvas: {err}", file=sys.stderr)
+        return 2
+    out = Path(args.out or Path(args.course) / "canvas-grades.csv")
+    write_csv(result, out)
+    lines = result.report()
+    report = out.with_name(out.stem + "-report.txt")
+    report.write_text("\n".join(lines) + "\n")
+    print(f"{out}: {lines[0]}; report in {report}")
+    for line in lines[1:]:
+        print(f"grades-canvas: {line}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,171 @@
+"""``make gradescope``: a Gradescope autograder zip per problem set, ``build/gradescope/psNN.zip``.
+
+    python -m grader.gradescope [--out build/gradescope] [--unconfined] [ps01 ...]
+
+Each zip holds, at its root, what Gradescope's autograder specification asks for
+(``setup.sh``, ``run_autograder``) and what grading needs:
+
+- ``course_lib/``, ``pyproject.toml``, ``README.md``, the pins (``environment-student.txt``,
+  ``requirements-grader.txt``: nbgrader's pin from ``environment.txt``): setup.sh installs
+  them into ``/opt/rotations-venv`` (outside ``/autograder``);
+- ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
+  ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
+- **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` (the reference solutions
+  that :mod:`grader.verify` re-checks every recorded answer against, at fresh points) and
+  ``problem_sets/psNN_*.ipynb`` (the instructor's solved copy, from which nbgrader builds its
+  gradebook and the released cells it puts back).
+
+The leak gate (``release/leak_gate.py``) scans every other member (:func:`leak_check`): none
+may hold a worked-solution line or the record of a right answer, nor (but for the code and
+README, which name the markers they handle) an nbgrader marker. Gradescope does not show the
+zip to students; what they see is ``results.json``, which holds only points, the checker's
+hints and the grader's notes (never cell outputs or the solutions); the tests run the leak
+gate on the results of the solved copy and of attacks. The risk that stays: the solutions are
+in the grading container, next to the student's code; bubblewrap's confined kernel cannot see
+them. Without bubblewrap the autograder refuses to run the notebook (``--unconfined`` makes it
+run it anyway, with the solutions in reach: docs/grading.md).
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import re
+import sys
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+__all__ = ["members", "build_zip", "leak_check", "SECRET", "SETUP", "RUN"]
+
+VENV = "/opt/rotations-venv"
+#: Zip members that hold the solutions on purpose (the leak gate does not scan them).
+SECRET = re.compile(r"^(tools/solutions/[^/]+\.py|problem_sets/ps\d\d_[^/]+\.ipynb)$")
+
+SETUP = f"""\
+#!/usr/bin/env bash
+# Gradescope runs this once, as root, when it builds the autograder's image (Ubuntu).
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q bubblewrap python3 python3-venv python3-pip
+python3 -m venv {VENV}
+{VENV}/bin/python -m pip install --quiet --upgrade pip
+{VENV}/bin/python -m pip install --quiet -r /autograder/source/environment-student.txt \\
+    -r /autograder/source/requirements-grader.txt
+# course_lib as a copy in the venv: the kernel sees the venv, never /autograder/source
+{VENV}/bin/python -m pip install --quiet --no-deps /autograder/source
+chmod 700 /autograder/source
+{VENV}/bin/python /autograder/source/grader/gradescope_run.py prepare
+"""
+
+RUN = f"""\
+#!/usr/bin/env bash
+# Gradescope runs this for every submission; it always writes results/results.json.
+# ROTATIONS_AUTOGRADER_ROOT and ROTATIONS_PYTHON: for the tests only.
+ROOT="${{ROTATIONS_AUTOGRADER_ROOT:-/autograder}}"
+PY="${{ROTATIONS_PYTHON:-{VENV}/bin/python}}"
+cd "$ROOT"
+exec "$PY" "$ROOT/source/grader/gradescope_run.py" grade
+"""
+
+
+def _nbgrader_pin(root=ROOT):
+    for line in (root / "environment.txt").read_text().splitlines():
+        if line.startswith("nbgrader=="):
+            return line.strip()
+    raise ValueError("environment.txt: no nbgrader== pin")
+
+
+def members(ps, root=ROOT, unconfined=False):
+    """``{name in the zip: bytes}`` of the autograder of problem set ``ps`` (``"ps01"``)."""
+    made = sorted((root / "problem_sets").glob(f"{ps}_*.ipynb"))
+    if len(made) != 1:
+        raise ValueError(f"ps: expected one problem_sets/{ps}_*.ipynb, found {len(made)}")
+    out = {"setup.sh": SETUP.encode(), "run_autograder": RUN.encode()}
+    for name in ("pyproject.toml", "README.md", "LICENSE", "environment-student.txt"):
+        out[name] = (root / name).read_bytes()
+    out["requirements-grader.txt"] = (_nbgrader_pin(root) + "\n").encode()
+    for folder in ("course_lib", "grader"):
+        for path in sorted((root / folder).rglob("*")):
+            if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
+                out[path.relative_to(root).as_posix()] = path.read_bytes()
+    for name in ("sync_exercises.py", "exercise_fingerprints.py"):
+        out[f"tools/{name}"] = (root / "tools" / name).read_bytes()
+    for path in sorted((root / "tools" / "solutions").glob("*.py")):
+        out[f"tools/solutions/{path.name}"] = path.read_bytes()
+    out[f"problem_sets/{made[0].name}"] = made[0].read_bytes()
+    if unconfined:
+        out["UNCONFINED"] = b"students' code runs unconfined (docs/grading.md)\n"
+    return out
+
+
+def leak_check(files, root=ROOT):
+    """Leak-gate hits in the zip members that are not :data:`SECRET` (a list of lines)."""
+    sys.path.insert(0, str(root / "release"))
+    import leak_gate
+
+    needles = leak_gate.collect_needles(root)
+    report = leak_gate.Report()
+    for name, data in sorted(files.items()):
+        if SECRET.match(name):
+            continue
+        if leak_gate._solution_dir(name):
+            report.hits.append(f"{name}: in a solutions folder")
+        found = leak_gate.Report()
+        leak_gate.scan_data(name, data, needles, found)
+        code = name.endswith((".py", ".md"))  # the grader's code names the markers it handles
+        report.hits += [h for h in found.hits if not (code and "nbgrader marker" in h)]
+    return report.hits
+
+
+def build_zip(ps, out, root=ROOT, unconfined=False):
+    """Write ``out/psNN.zip``; refuses (ValueError) when the leak gate finds anything."""
+    files = members(ps, root, unconfined)
+    hits = leak_check(files, root)
+    if hits:
+        raise ValueError(f"{ps}: the leak gate found solutions in the zip: {hits[:5]}")
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as zf:
+        for name, data in sorted(files.items()):
+            info = zipfile.ZipInfo(name, date_time=(2026, 1, 1, 0, 0, 0))
+            info.external_attr = (0o755 if name in ("setup.sh", "run_autograder") else 0o644) << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            zf.writestr(info, data)
+    path = out / f"{ps}.zip"
+    path.write_bytes(buf.getvalue())
+    return path
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("sets", nargs="*", help="problem sets (default: all)")
+    parser.add_argument("--out", default=str(ROOT / "build" / "gradescope"))
+    parser.add_argument(
+        "--unconfined",
+        action="store_true",
+        help="run submissions even where bubblewrap cannot confine them (docs/grading.md)",
+    )
+    args = parser.parse_args(argv)
+    found = sorted(p.name[:4] for p in (ROOT / "problem_sets").glob("ps[0-9][0-9]_*.ipynb"))
+    sets = args.sets or found
+    for ps in sets:
+        if ps not in found:
+            parser.error(f"no problem set {ps!r}; there are {', '.join(found)}")
+    try:
+        for ps in sets:
+            path = build_zip(ps, args.out, unconfined=args.unconfined)
+            print(f"{path}: {path.stat().st_size // 1024} kB, leak gate: 0 hits outside SECRET")
+    except (OSError, ValueError) as err:
+        print(f"make gradescope: {err}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,123 @@
+"""``make grades-canvas`` (grader/canvas.py) on a real nbgrader gradebook made with nbgrader's
+own Gradebook API: the Canvas import layout, missing submissions blank and listed (never 0),
+unknown students listed, a Canvas roster export's ids and column names reused."""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from nbgrader.api import Gradebook
+
+ROOT = Path(__file__).resolve().parents[1]
+# nbgrader 0.9.6's own add_submission warns of its autoflush (SQLAlchemy 2)
+pytestmark = pytest.mark.filterwarnings("ignore::sqlalchemy.exc.SAWarning")
+sys.path.insert(0, str(ROOT))
+from grader.canvas import IDENTITY, export, main, write_csv  # noqa: E402
+
+
+@pytest.fixture(autouse=True)
+def _alembic_on_path(monkeypatch):
+    """nbgrader runs ``alembic`` from PATH when it makes a gradebook."""
+    bin_dir = str(Path(sys.executable).parent)
+    monkeypatch.setenv("PATH", f"{bin_dir}:{os.environ.get('PATH', '')}")
+
+
+def _course(tmp_path):
+    course = tmp_path / "course"
+    course.mkdir()
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        for ps, points in (("ps01", 14), ("ps02", 14)):
+            gb.add_assignment(ps)
+            gb.update_or_create_notebook("nb", ps)
+            gb.update_or_create_grade_cell("a-check", "nb", ps, max_score=points, cell_type="code")
+        gb.add_student("ada", first_name="Ada", last_name="Lovelace", lms_user_id="101")
+        gb.add_student("bob", first_name="Bob", last_name="Ross", email="bob@example.edu")
+        gb.add_student("zed")  # no Canvas identity: unknown to a roster
+        for ps, sid, score in (("ps01", "ada", 14), ("ps01", "bob", 0), ("ps02", "ada", 7.5)):
+            sub = gb.add_submission(ps, sid)
+            grade = sub.notebooks[0].grades[0]
+            grade.manual_score = score
+            gb.db.commit()
+        gb.add_submission("ps02", "zed")
+    return course
+
+
+def _rows(path):
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.reader(f))
+
+
+def test_canvas_layout_and_missing_submissions_are_blank_not_zero(tmp_path):
+    course = _course(tmp_path)
+    result = export(course)
+    rows = _rows(write_csv(result, tmp_path / "out.csv"))
+    assert rows[0] == [*IDENTITY, "ps01", "ps02"]
+    assert rows[1] == ["Points Possible", "", "", "", "", "14", "14"]
+    by_sis = {r[2]: r for r in rows[2:]}
+    assert by_sis["ada"] == ["Lovelace, Ada", "101", "ada", "", "", "14", "7.5"]
+    assert by_sis["bob"][5:] == ["0", ""]  # a real 0 stays 0; no ps02: blank
+    assert by_sis["zed"][5:] == ["", "0"]
+    assert ("Ross, Bob", "ps02") in result.missing and ("zed", "ps01") in result.missing
+    assert not any(who.startswith("Lovelace") for who, _ in result.missing)
+
+
+def test_roster_ids_and_assignment_columns_are_used_unknown_students_listed(tmp_path):
+    course = _course(tmp_path)
+    roster = tmp_path / "export.csv"
+    roster.write_text(
+        "\ufeffStudent,ID,SIS User ID,SIS Login ID,Section,ps01 (555),Final Score\n"
+        "    Points Possible,,,,,14,\n"
+        '"Lovelace, Ada",9001,ada,ada@example.edu,Sec A,,\n'
+        '"Ross, Bob",9002,S2,bob@example.edu,Sec B,,\n'
+        '"Curie, Marie",9003,S3,marie@example.edu,Sec A,,\n',
+        encoding="utf-8",
+    )
+    result = export(course, ["ps01"], roster)
+    rows = _rows(write_csv(result, tmp_path / "out.csv"))
+    assert rows[0] == [*IDENTITY, "ps01 (555)"]
+    table = {r[0]: r for r in rows[2:]}
+    assert table["Lovelace, Ada"] == [
+        "Lovelace, Ada",
+        "9001",
+        "ada",
+        "ada@example.edu",
+        "Sec A",
+        "14",
+    ]
+    assert table["Ross, Bob"][-1] == "0"  # matched by e-mail (SIS Login ID)
+    assert table["Curie, Marie"][-1] == ""  # in Canvas, never submitted: blank and listed
+    assert ("Curie, Marie", "ps01") in result.missing
+    assert result.unknown == []  # zed has no ps01 submission
+    result = export(course, ["ps02"], roster)
+    assert result.unknown == ["zed"]  # graded in nbgrader, in no roster row: listed
+    assert "zed" not in {r[2] for r in result.rows}
+
+
+def test_bad_input_names_the_argument(tmp_path, capsys):
+    with pytest.raises(ValueError, match="COURSE: no gradebook.db"):
+        export(tmp_path)
+    course = _course(tmp_path)
+    with pytest.raises(ValueError, match="ASSIGNMENT: 'ps09'"):
+        export(course, ["ps09"])
+    assert main([str(course), "--assignment", "ps09"]) == 2
+    assert "ps09" in capsys.readouterr().err
+
+
+def test_command_line_writes_csv_and_report(tmp_path):
+    course = _course(tmp_path)
+    done = subprocess.run(
+        [sys.executable, "-m", "grader.canvas", str(course)],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stderr
+    assert (course / "canvas-grades.csv").is_file()
+    report = (course / "canvas-grades-report.txt").read_text()
+    assert "missing submission: zed has no ps01 (blank, not 0)" in report
+    assert "missing submission: zed has no ps01" in done.stderr

@@ -10,7 +10,9 @@ import re
 WCAG_TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 #: Link texts that say nothing of where the link goes (WCAG 2.4.4).
 VAGUE_LINKS = {"here", "click here", "link", "this", "more", "read more", "this link", "this page"}
-_GENERIC_ALT = re.compile(r"^\s*(figure|fig\.?|image|img|plot|picture|graph|chart)?\s*\d*\s*$", re.I)
+_GENERIC_ALT = re.compile(
+    r"^\s*(figure|fig\.?|image|img|plot|picture|graph|chart)?\s*\d*\s*$", re.I
+)
 _CODE_ALT = re.compile(r"(\w+\.\w+\(|\w+\(.*\)|^\s*(import|from|plt\.|fig,|ax\b)|=\s*\w+\()")
 
 

@@ -70,7 +70,8 @@ def install_scripts():
     static = DEPS / "static"
     shutil.rmtree(static, ignore_errors=True)
     shutil.copytree(modules / "mathjax" / "es5", static / "mathjax", ignore=_unused_mathjax)
-    shutil.copy(HERE / "static" / "course.css", static / "course.css")
+    for name in ("course.css", "course.js"):
+        shutil.copy(HERE / "static" / name, static / name)
     return static
 
 

@@ -133,3 +133,15 @@ course: $(STAMP)
 # per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
 bench-grade: $(STAMP)
 	$(BIN)/python benchmarks/bench_grade.py --students 20 --jobs 2
+
+# Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
+# axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every
+# chapter and problem set opened in JupyterLab; fails on any violation in the course's content.
+.PHONY: a11y
+a11y: $(SITE_STAMP)
+	@test -x /usr/bin/chromium || { echo "make a11y needs Chromium: sudo apt-get install chromium"; exit 2; }
+	@command -v npm >/dev/null || { echo "make a11y needs npm (axe-core, MathJax): sudo apt-get install npm"; exit 2; }
+	$(BIN)/python site/build.py
+	$(BIN)/python site/build.py --solutions
+	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
+	$(BIN)/python e2e/a11y.py

@@ -10,8 +10,9 @@
    body (``div.body``) is the course's content, the rest (sidebar, footer) the theme's chrome.
 3. Every chapter and problem set is opened in JupyterLab (e2e's :class:`run_e2e.Lab`: its own
    server, copy and profile), run, scrolled through so that every cell is rendered, and checked
-   the same way; what lies inside the notebook's cells (``.jp-Cell``: sources, outputs,
-   figures, widgets) is the course's content, the rest JupyterLab's own chrome, reported apart.
+   the same way; the notebook's outputs (figures, widgets, text) and rendered markdown are the
+   course's content, the rest (the cell editors, the fold buttons, menus) JupyterLab's own
+   chrome, reported apart.
 4. Besides axe: the page language, one h1, headings without a skipped level and meaningful link
    text (:mod:`a11y_rules`), on the site's pages.
 
@@ -38,7 +39,10 @@ AXE_JS = DEPS / "node_modules" / "axe-core" / "axe.min.js"
 CHROMIUM = Path("/usr/bin/chromium")
 SITES = [ROOT / "build" / "site", ROOT / "build" / "site-instructor"]
 SITE_CONTENT = "div.body"
-LAB_CONTENT = ".jp-Cell"
+# The notebook's own content in JupyterLab: its outputs (figures, widgets, text) and its rendered
+# markdown. The cell editor (CodeMirror's textbox) and the heading fold button are JupyterLab's.
+LAB_CONTENT = ".jp-OutputArea-output, .jp-RenderedMarkdown"
+LAB_NOT_CONTENT = ".jp-collapseHeadingButton, .cm-editor"
 
 
 def missing_tools(need_npm):
@@ -58,11 +62,11 @@ def install_axe():
     return AXE_JS
 
 
-def run_axe(page, content):
+def run_axe(page, content, not_content=None):
     """axe's WCAG A/AA results on ``page``, its nodes sorted into content / chrome."""
     if not page.evaluate("typeof window.axe !== 'undefined'"):
         page.add_script_tag(path=str(AXE_JS))
-    return page.evaluate(js("axe_run"), [content, WCAG_TAGS])
+    return page.evaluate(js("axe_run"), [content, WCAG_TAGS, not_content])
 
 
 def count(rules, where):
@@ -164,7 +168,7 @@ def check_lab(pw, paths, timeout=240):
                 open_and_run(page, lab.server, nb, problems, timeout)
                 page.evaluate(js("sweep"))
                 page.wait_for_timeout(500)
-                result = run_axe(page, LAB_CONTENT)
+                result = run_axe(page, LAB_CONTENT, LAB_NOT_CONTENT)
             except CheckFailed as exc:
                 failures.append(f"{nb}: could not be checked: {exc}")
                 continue

@@ -13,7 +13,9 @@ VAGUE_LINKS = {"here", "click here", "link", "this", "more", "read more", "this 
 _GENERIC_ALT = re.compile(
     r"^\s*(figure|fig\.?|image|img|plot|picture|graph|chart)?\s*\d*\s*$", re.I
 )
-_CODE_ALT = re.compile(r"(\w+\.\w+\(|\w+\(.*\)|^\s*(import|from|plt\.|fig,|ax\b)|=\s*\w+\()")
+_CODE_ALT = re.compile(
+    r"(\b\w+\.\w+\(|^\s*(import\s|from\s+\w+\s+import|plt\.|fig\s*,|ax\s*=)|^\s*\w+\s*=\s*\w+[.(])"
+)
 
 
 def alt_text_problem(alt):

@@ -10,6 +10,7 @@ screen reader's "next control" would land on it: Tab through a whole JupyterLab 
 hundreds of editor stops first); after that no mouse and no click. Exit status 0 when it holds.
 """
 
+import functools
 import sys
 from pathlib import Path
 
@@ -28,6 +29,12 @@ FOCUS_JS = """() => {
           index: slider ? [...slider.parentElement.querySelectorAll('.widget-slider')]
                           .indexOf(slider) : -1};
 }"""
+
+
+def _redrawn(page, before, i):
+    """Widget 0's figure now, if it differs from ``before`` (slider i's readout with it)."""
+    now = page.evaluate(js("widget_figure"), [0, i])
+    return now if now["loaded"] and now["src"] != before["src"] else None
 
 
 def drive(page, problems, timeout=60):
@@ -53,9 +60,7 @@ def drive(page, problems, timeout=60):
             page.keyboard.press("ArrowRight")
         try:
             after = poll(
-                lambda b=before, i=focus["index"]: (
-                    lambda now: now if now["loaded"] and now["src"] != b["src"] else None
-                )(page.evaluate(js("widget_figure"), [0, i])),
+                functools.partial(_redrawn, page, before, focus["index"]),
                 timeout,
                 f"the figure to redraw after the arrow keys on slider {name!r}",
             )
@@ -64,11 +69,17 @@ def drive(page, problems, timeout=60):
             return
         log(
             f"  slider {s} {name!r}: arrow keys: {before['readout']} -> {after['readout']}, "
-            f"figure redrawn; focus visible"
+            "figure redrawn, focus ring shown"
         )
-        if s + 1 < len(labels):
+        for _ in range(4):  # Tab: past the slider's editable readout, to the next handle
+            if s + 1 == len(labels):
+                break
             page.keyboard.press("Tab")
             page.wait_for_timeout(200)
+            now = page.evaluate(FOCUS_JS)
+            on_handle = page.evaluate("document.activeElement.classList.contains('noUi-handle')")
+            if now["index"] == focus["index"] + 1 and on_handle:
+                break
 
 
 def main(argv=None):

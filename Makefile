@@ -157,3 +157,16 @@ bench-gradescope: $(STAMP)
 
 test-gradescope: $(STAMP)
 	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q
+
+# Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
+# axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every
+# chapter and problem set opened in JupyterLab; fails on any violation in the course's content.
+.PHONY: a11y
+a11y: $(SITE_STAMP)
+	@test -x /usr/bin/chromium || { echo "make a11y needs Chromium: sudo apt-get install chromium"; exit 2; }
+	@command -v npm >/dev/null || { echo "make a11y needs npm (axe-core, MathJax): sudo apt-get install npm"; exit 2; }
+	$(BIN)/python site/build.py
+	$(BIN)/python site/build.py --solutions
+	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
+	$(BIN)/python e2e/a11y_keyboard.py
+	$(BIN)/python e2e/a11y.py

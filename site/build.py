@@ -76,7 +76,8 @@ def install_scripts():
     static = DEPS / "static"
     shutil.rmtree(static, ignore_errors=True)
     shutil.copytree(modules / "mathjax" / "es5", static / "mathjax", ignore=_unused_mathjax)
-    shutil.copy(HERE / "static" / "course.css", static / "course.css")
+    for name in ("course.css", "course.js"):
+        shutil.copy(HERE / "static" / name, static / name)
     return static
 
 
@@ -131,11 +132,29 @@ def launch_line(url, name):
     return "*Run this chapter yourself:* " + " · ".join(links)
 
 
+def _first_sentence(source):
+    """The first paragraph of a markdown cell that is not a heading, as plain text."""
+    paragraphs = [p for p in source.strip().split("\n\n") if p and not p.lstrip().startswith("#")]
+    if not paragraphs:
+        return None
+    text = re.sub(r"[*_`$\\#>]", "", paragraphs[0])
+    return " ".join(text.split())[:200]
+
+
 def _alt_text(cells, i):
+    """The alt text of the figure of cell i: the caption under it (the first paragraph of the
+    next markdown cell, when it is not a new section), else the text that introduces it (the
+    markdown cell before, e.g. an explorer's "Explore" section), else "Figure" (which
+    tests/test_a11y_rules.py rejects)."""
     for cell in cells[i + 1 : i + 3]:
         if cell.cell_type == "markdown" and cell.source.strip():
-            text = re.sub(r"[*_`$\\#>]", "", cell.source.strip().split("\n\n")[0])
-            return " ".join(text.split())[:200]
+            if not cell.source.lstrip().startswith("#"):
+                return _first_sentence(cell.source)
+            break
+    if i > 0 and cells[i - 1].cell_type == "markdown":
+        text = _first_sentence(cells[i - 1].source)
+        if text:
+            return text
     return "Figure"
 
 

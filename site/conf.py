@@ -18,7 +18,11 @@ html_title = project
 html_theme_options = {"nosidebar": False, "show_powered_by": False}
 html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # mathjax/, course.css (site/build.py)
 mathjax_path = "mathjax/tex-chtml.js"  # relative to _static/
-html_css_files = ["course.css"]  # no page wider than the window
+html_css_files = ["course.css"]  # no page wider than the window; contrast (WCAG 1.4.3)
+html_js_files = ["course.js"]  # a tab stop on every box that scrolls sideways (WCAG 2.1.1)
+# Pygments' own default style meets WCAG AA contrast (4.5:1) on a light background; the
+# theme's (alabaster) has string colours of 3.2:1.
+pygments_style = "default"
 templates_path = ["_templates"]  # site/templates: the instructor banner
 html_context = {"course_instructor_edition": os.environ.get("COURSE_SITE_EDITION") == "instructor"}
 html_show_sourcelink = False

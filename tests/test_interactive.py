@@ -406,19 +406,23 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
     for slider, (lo, hi) in zip(widget.sliders.values(), (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)):
         assert (slider.min, slider.max) == (lo, hi)
         assert slider.continuous_update is False  # one redraw per release, not per pixel
-    assert list(widget.children[:3]) == list(widget.sliders.values())
-    assert isinstance(widget.children[3], Canvas) and widget.children[3] is widget.figure.canvas
+    # children[0]: the focus style (WCAG 2.4.7), then the sliders, the canvas, the readout
+    assert list(widget.children[1:][:3]) == list(widget.sliders.values())
+    assert (
+        isinstance(widget.children[1:][3], Canvas)
+        and widget.children[1:][3] is widget.figure.canvas
+    )
     assert (
         widget.figure.canvas.header_visible is False
         and widget.figure.canvas.footer_visible is False
     )
     if make is rodrigues_explorer:
         assert (
-            isinstance(widget.children[4], ipywidgets.HTMLMath)
-            and widget.readout is widget.children[4]
+            isinstance(widget.children[1:][4], ipywidgets.HTMLMath)
+            and widget.readout is widget.children[1:][4]
         )
     else:
-        assert len(widget.children) == 4 and widget.readout is None
+        assert len(widget.children) == 5 and widget.readout is None
 
 
 @pytest.mark.parametrize("make", EXPLORERS)

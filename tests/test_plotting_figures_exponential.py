@@ -59,7 +59,7 @@ def test_draw_pendulum_draws_the_velocity_in_green():
     green = [
         a
         for a in _arrows(pend)
-        if matplotlib.colors.to_hex(a.get_edgecolor()) == matplotlib.colors.to_hex("tab:green")
+        if matplotlib.colors.to_hex(a.get_edgecolor()) == matplotlib.colors.to_hex("#009E73")
     ]
     (v_arrow,) = green
     assert np.allclose(v_arrow.end - v_arrow.start, 0.5 * pend.velocity)

@@ -3,6 +3,7 @@ r"""The animation of chapter 03: a body frame spinning at unit angular velocity 
 import base64
 import re
 import tempfile
+from html import escape as html_escape
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -96,7 +97,8 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
         raise ValueError(f"size must be between 1 and 8 inches, got {size:g}")
     times = spin_times(frames, duration)
     rotations = spin_rotations(axis, times)
-    fig, ax, clock = _spin_scene(as_direction(axis, "axis"), size)
+    w = as_direction(axis, "axis")
+    fig, ax, clock = _spin_scene(w, size)
     body = []
 
     def update(k):
@@ -110,7 +112,7 @@ def spin_animation(axis=(0.0, 0.0, 1.0), frames=16, duration=2.0 * np.pi, dpi=10
     interval_ms = 1000.0 * float(times[1] - times[0])
     anim = animation.FuncAnimation(fig, update, frames=frames, interval=interval_ms, blit=False)
     try:
-        return HTML(_html_player(anim, 1000.0 / interval_ms, dpi))
+        return HTML(_html_player(anim, 1000.0 / interval_ms, dpi, _spin_alt(w, duration)))
     finally:
         plt.close(fig)
 
@@ -128,13 +130,27 @@ def _spin_scene(w, size):
     return fig, ax, clock
 
 
-def _html_player(anim, fps, dpi):
-    """The HTML text of matplotlib's JavaScript player for ``anim``, palette PNG frames inside."""
+def _spin_alt(w, duration):
+    """The alt text of every frame of the spin animation: what it shows, what to see in it."""
+    axis = ", ".join(f"{c:.2g}" for c in w)
+    return (
+        f"A body frame B spinning about the axis ({axis}) at 1 radian per second for "
+        f"{duration:.2f} seconds; the world frame is dotted. Each frame shows B at time t, "
+        "turned by the angle t: the tips of its axes travel on the dotted circles around the "
+        "axis, and the axis itself does not move."
+    )
+
+
+def _html_player(anim, fps, dpi, alt):
+    """The HTML text of matplotlib's JavaScript player for ``anim``, palette PNG frames inside.
+
+    It never plays by itself: it shows the first frame until Play is pressed, and Pause stops it.
+    """
     writer = _PaletteHTMLWriter(fps=fps, embed_frames=True, default_mode="loop")
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp, "spin.html")
         anim.save(str(path), writer=writer, dpi=dpi)
-        return _offline_player(path.read_text())
+        return _offline_player(path.read_text(), alt)
 
 
 # matplotlib's player draws its buttons with Font Awesome icons, linked from a CDN: a page that
@@ -154,19 +170,22 @@ _FA_LINK = re.compile(r"<link[^>]*font-awesome[^>]*>\s*", re.S)
 _FA_ICON = re.compile(r'<i class="fa (fa-[a-z-]+(?: fa-flip-horizontal)?)"></i>')
 _FIRST_FRAME = re.compile(r'frames\[0\] = "(data:image/png;base64,[A-Za-z0-9+/=\\\n]+)"')
 _PLAYER_IMG = re.compile(r'<img id="(_anim_img[0-9a-f]+)">')
+_SLIDER = re.compile(r'(<input id="_anim_slider[0-9a-f]+" type="range")')
 
 
-def _offline_player(html):
+def _offline_player(html, alt):
     """The player with no request outside the page, showing its first frame before any script.
 
     The Font Awesome link goes, its icons become characters (:data:`_ICONS`); the ``<img>``
     gets frame 0 as its ``src``, so the picture is there where scripts do not run (an untrusted
-    notebook, a viewer) and before the player starts.
+    notebook, a viewer) and before the player starts, with ``alt`` as its alt text (WCAG
+    1.1.1), and the frame slider gets a label (4.1.2).
     """
     html = _FA_LINK.sub("", html)
     html = _FA_ICON.sub(lambda m: f'<span aria-hidden="true">{_ICONS[m.group(1)]}</span>', html)
     first = _FIRST_FRAME.search(html)
     if first:
         src = first.group(1).replace("\\\n", "")
-        html = _PLAYER_IMG.sub(lambda m: f'<img id="{m.group(1)}" src="{src}" alt="">', html)
-    return html
+        alt = html_escape(alt, quote=True)
+        html = _PLAYER_IMG.sub(lambda m: f'<img id="{m.group(1)}" src="{src}" alt="{alt}">', html)
+    return _SLIDER.sub(r'\1 aria-label="Frame of the animation (time)"', html)

@@ -36,7 +36,7 @@ YAW_RANGE = (-180.0, 180.0)
 PITCH_RANGE = (-90.0, 90.0)
 ROLL_RANGE = (-180.0, 180.0)
 
-_TURNS = (("yaw", "tab:blue", 1.25), ("pitch", "tab:green", 1.05), ("roll", "tab:red", 0.85))
+_TURNS = (("yaw", "#0072B2", 1.25), ("pitch", "#009E73", 1.05), ("roll", "#D55E00", 0.85))
 #: The gimbal's first camera, in degrees: the pitch axis to the side, not behind the body.
 GIMBAL_ELEV, GIMBAL_AZIM = 20.0, 45.0
 _LOCKED = 1e-9  # |cos θ| below this: the pitch is ±90° (the slider steps by whole degrees)

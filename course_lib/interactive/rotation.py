@@ -36,8 +36,8 @@ THETA_RANGE = (0.0, 2.0 * np.pi)
 #: The fixed point q0 that the Rodrigues explorer rotates (the tip of the world x axis).
 Q0 = (1.0, 0.0, 0.0)
 
-_TERM_COLORS = ("black", "tab:orange", "tab:purple")
-_RESULT_COLOR = "tab:blue"
+_TERM_COLORS = ("black", "#C04F00", "tab:purple")
+_RESULT_COLOR = "#0072B2"
 _AXIS_COLOR = "0.35"
 _WORLD_AXES = ("x_A", "y_A", "z_A")
 _RODRIGUES_LABELS = (

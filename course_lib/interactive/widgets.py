@@ -85,6 +85,14 @@ class SliderSpec:
         self.step, self.unit, self.readout_format = step, unit, readout_format
 
 
+# WCAG 2.4.7: a focus ring the keyboard user sees on the slider handles (ipywidgets' own focus
+# style on a handle is a faint shadow); scoped to the explorers.
+_FOCUS_STYLE = (
+    "<style>.course-explorer .noUi-handle:focus, .course-explorer .widget-readout:focus "
+    "{outline: 3px solid #1a5fb4; outline-offset: 2px;}</style>"
+)
+
+
 def _slider(spec):
     lo, hi = spec.bounds
     value = _scalar_angle(spec.value, spec.description)
@@ -237,7 +245,9 @@ class Explorer(ipywidgets.VBox):
         self._readout = readout
         self.readout = ipywidgets.HTMLMath() if readout else None
         children = [*self.sliders.values(), self.figure.canvas] if self.live else []
+        children = [ipywidgets.HTML(_FOCUS_STYLE), *children] if self.live else []
         super().__init__(children=children + ([self.readout] if readout and self.live else []))
+        self.add_class("course-explorer")
         self._redraw(elev, azim)
         self._update_readout()
         for slider in self.sliders.values():

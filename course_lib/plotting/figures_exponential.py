@@ -99,7 +99,7 @@ def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
             draw_arc(ax, None, [0.0, -0.3 * r], th, center=c, label=r"$\theta$", arrow=False)
         )
     if om != 0.0:
-        artists.extend(draw_vector(ax, vs * v, origin=bob, label="$v$", color="tab:green"))
+        artists.extend(draw_vector(ax, vs * v, origin=bob, label="$v$", color="#009E73"))
     return Drawn("pendulum", artists, np.stack([c, bob]), velocity=v)
 
 
@@ -185,18 +185,18 @@ def plot_rodrigues_circle(
     # the rotated point just outside the circle. The two dashed terms are named in a legend.
     u, v = _unit(q_perp), _unit(w_x_q)
     sv = 1.0 if np.sin(th) >= 0 else -1.0
-    draw_vector(ax, q_perp, origin=q_par, color="tab:blue")
-    _text(ax, q_par + q_perp / 2 - sv * pad * v, r"$q_\perp$", color="tab:blue")
-    draw_vector(ax, w_x_q, origin=q_par, color="tab:green")
-    _text(ax, q_par + w_x_q / 2 + 2.2 * pad * u, r"$\omega\times q$", color="tab:green")
+    draw_vector(ax, q_perp, origin=q_par, color="#0072B2")
+    _text(ax, q_par + q_perp / 2 - sv * pad * v, r"$q_\perp$", color="#0072B2")
+    draw_vector(ax, w_x_q, origin=q_par, color="#009E73")
+    _text(ax, q_par + w_x_q / 2 + 2.2 * pad * u, r"$\omega\times q$", color="#009E73")
     cos_part = np.cos(th) * q_perp
-    draw_vector(ax, cos_part, origin=q_par, color="tab:blue", style="dashed")
-    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="tab:green", style="dashed")
-    draw_vector(ax, Rq, color="tab:red")
+    draw_vector(ax, cos_part, origin=q_par, color="#0072B2", style="dashed")
+    draw_vector(ax, np.sin(th) * w_x_q, origin=q_par + cos_part, color="#009E73", style="dashed")
+    draw_vector(ax, Rq, color="#D55E00")
     out = 2.0 * _unit(Rq - q_par) + up  # outward from the circle, and up on the screen
-    _text(ax, Rq + pad * out, r"$e^{\hat\omega\theta}q$", color="tab:red", va="bottom")
+    _text(ax, Rq + pad * out, r"$e^{\hat\omega\theta}q$", color="#D55E00", va="bottom")
     dashed = [
-        Line2D([], [], color=c, linestyle="--", linewidth=1.8) for c in ("tab:blue", "tab:green")
+        Line2D([], [], color=c, linestyle="--", linewidth=1.8) for c in ("#0072B2", "#009E73")
     ]
     ax.legend(
         dashed,

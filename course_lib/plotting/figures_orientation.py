@@ -109,9 +109,9 @@ def gimbal_axes(pitches, yaw=0.5, elev=20.0, azim=20.0):
             {
                 "title": f"pitch {np.degrees(pitch):.0f}°",
                 "vectors": [
-                    {"v": [0, 0, 1.0], "label": "yaw axis", "color": "tab:blue"},
-                    {"v": R_yaw @ [0, 1.0, 0], "label": "pitch axis", "color": "tab:green"},
-                    {"v": roll_axis, "label": "roll axis", "color": "tab:red"},
+                    {"v": [0, 0, 1.0], "label": "yaw axis", "color": "#0072B2"},
+                    {"v": R_yaw @ [0, 1.0, 0], "label": "pitch axis", "color": "#009E73"},
+                    {"v": roll_axis, "label": "roll axis", "color": "#D55E00"},
                 ],
             }
         )
@@ -135,9 +135,9 @@ def double_cover(turns=2.0):
     q = quaternion.from_axis_angle([0.0, 0.0, 1.0], theta)
     R = quaternion.to_matrix(q)
     fig, ax = plt.subplots(figsize=(6.4, 3.4), dpi=DPI, layout=_LAYOUT_2D)
-    ax.plot(theta / np.pi, q[:, 0], color="tab:blue", label=r"quaternion: $w = \cos(\theta/2)$")
+    ax.plot(theta / np.pi, q[:, 0], color="#0072B2", label=r"quaternion: $w = \cos(\theta/2)$")
     cos_theta = (np.trace(R, axis1=1, axis2=2) - 1) / 2
-    ax.plot(theta / np.pi, cos_theta, "--", color="tab:orange", label=_MATRIX_LABEL)
+    ax.plot(theta / np.pi, cos_theta, "--", color="#C04F00", label=_MATRIX_LABEL)
     for k in range(1, int(theta[-1] / (2 * np.pi)) + 1):
         ax.axvline(2 * k, color="0.6", linewidth=0.8)
     ax.set_xlabel(r"angle $\theta$ (multiples of $\pi$)")

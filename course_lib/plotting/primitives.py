@@ -37,8 +37,10 @@ __all__ = [
     "draw_curve",
 ]
 
-#: Colours of the x, y and z axes of every frame (red, green, blue, as in the notes).
-FRAME_COLORS = ("tab:red", "tab:green", "tab:blue")
+#: Colours of the x, y and z axes of every frame: red, green, blue as in the notes, in the
+#: colour-blind-safe shades of Okabe & Ito (vermillion, bluish green, blue), each 3:1 or more on
+#: white (WCAG 1.4.11); tests/test_a11y_colour.py checks them under protanopia and deuteranopia.
+FRAME_COLORS = ("#D55E00", "#009E73", "#0072B2")
 
 ARROW_HEAD = 12  # arrow head size in points (FancyArrowPatch mutation_scale)
 

@@ -244,7 +244,7 @@ def draw_box(
     marks=None,
     mark_labels=None,
     frame=None,
-    color="tab:blue",
+    color="#0072B2",
     alpha=0.25,
     tol=TOL,
 ):
@@ -273,7 +273,7 @@ def draw_box(
         One label per mark (e.g. ``["$p_1$", "$p_2$"]``).
     frame : str, optional
         If given, also draw the body frame at the centre with this name.
-    color : colour, default "tab:blue"
+    color : colour, default "#0072B2"
     alpha : float, default 0.25
         Opacity of the faces.
     tol : float, default TOL

@@ -1,0 +1,71 @@
+"""Accessibility of the built site in headless Chromium (``make a11y`` runs it; browser marker).
+
+Math is read as math by a screen reader (MathJax's assistive MathML: Rodrigues' formula is a
+``math`` node of the accessibility tree, not raw LaTeX); every page has its language, one h1,
+headings in order and meaningful link text; the animation player works from the keyboard alone
+with a visible focus. The axe-core rules run in ``e2e/a11y.py``.
+"""
+
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "e2e"))
+sys.path.insert(0, str(HERE))
+import test_site  # noqa: E402
+from a11y_rules import structure_problems  # noqa: E402
+
+# the site's fixtures: one server, one browser, each page loaded once
+server, browser, visit = test_site.server, test_site.browser, test_site.visit
+PAGES = test_site.PAGES
+
+pytestmark = pytest.mark.browser
+STRUCTURE_JS = (HERE.parent / "e2e" / "js" / "page_structure.js").read_text()
+
+
+def test_rodrigues_formula_is_math_in_the_accessibility_tree(visit):
+    page, _ = visit("03_exponential_coordinates")
+    tree = page.locator("div.body").aria_snapshot()
+    maths = [line.split("math:", 1)[1] for line in tree.splitlines() if "- math:" in line]
+    assert len(maths) >= 20, "MathJax's assistive MathML is missing: no math in the tree"
+    rodrigues = [m for m in maths if "sin" in m and "cos" in m and "θ" in m and "ω" in m]
+    assert rodrigues, "Rodrigues' formula is not in the accessibility tree as math"
+    latex = [m for m in maths if re.search(r"\\[a-zA-Z]+", m)]
+    assert latex == [], f"raw LaTeX read out as math: {latex[:2]}"
+
+
+@pytest.mark.parametrize("name", PAGES)
+def test_language_headings_and_link_text(visit, name):
+    page, _ = visit(name)
+    info = page.evaluate(STRUCTURE_JS, "div.body")
+    assert structure_problems(info) == [], name
+
+
+def test_animation_player_works_from_the_keyboard_with_visible_focus(visit):
+    """Tab to the frame slider, the arrow keys change the frame; Tab to Play, then Pause."""
+    page, _ = visit("03_exponential_coordinates")
+    slider = page.locator("input.anim-slider").first
+    assert slider.get_attribute("aria-label")
+    img = page.locator("div.animation img").first
+    assert img.get_attribute("alt")
+    page.locator("body").focus()
+    for _ in range(400):  # Tab only: no click, no mouse
+        page.keyboard.press("Tab")
+        if page.evaluate("document.activeElement.classList.contains('anim-slider')"):
+            break
+    else:
+        pytest.fail("the animation's slider cannot be reached with Tab")
+    outline = page.evaluate("getComputedStyle(document.activeElement).outlineStyle")
+    assert outline != "none", "no visible focus on the slider"
+    before = img.get_attribute("src")
+    page.keyboard.press("ArrowRight")
+    page.wait_for_timeout(200)
+    assert slider.input_value() == "1" and img.get_attribute("src") != before
+    names = []
+    for _ in range(6):
+        page.keyboard.press("Tab")
+        names.append(page.evaluate("document.activeElement.getAttribute('aria-label')"))
+    assert "Pause" in names and "Play" in names, names

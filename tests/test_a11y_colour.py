@@ -1,0 +1,133 @@
+"""Figures readable without colour (WCAG 1.4.1, 1.4.11): the frame palette simulated for
+protanopia and deuteranopia (Machado, Oliveira & Fernandes 2009, severity 1.0) on the palette and
+on a rendered PNG, its contrast on white, and what tells the axes apart besides colour."""
+
+import io
+import itertools
+
+import matplotlib.colors as mc
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from PIL import Image
+
+from course_lib import plotting
+from course_lib.plotting.figures_orientation import double_cover
+
+# Machado et al. 2009, Table 1, severity 1.0, acting on linear RGB.
+MACHADO = {
+    "protanopia": np.array(
+        [[0.152286, 1.052583, -0.204868], [0.114503, 0.786281, 0.099216],
+         [-0.003882, -0.048116, 1.051998]]
+    ),
+    "deuteranopia": np.array(
+        [[0.367322, 0.860646, -0.227968], [0.280085, 0.672501, 0.047413],
+         [-0.011820, 0.042940, 0.968881]]
+    ),
+}  # fmt: skip
+MIN_DELTA_E = 20.0  # CIE76 distance in L*a*b*: about 2.3 is "just noticeable"; 20 is clearly apart
+
+
+def linear(rgb):
+    rgb = np.asarray(rgb, dtype=float)
+    return np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
+
+
+def simulate(rgb, kind):
+    lin = np.clip(linear(rgb) @ MACHADO[kind].T, 0.0, 1.0)
+    return np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * lin ** (1 / 2.4) - 0.055)
+
+
+def lab(rgb):
+    m = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]])
+    xyz = linear(rgb) @ m.T / np.array([0.95047, 1.0, 1.08883])
+    f = np.where(xyz > 0.008856, np.cbrt(xyz), 7.787 * xyz + 16 / 116)
+    return np.stack([116 * f[..., 1] - 16, 500 * (f[..., 0] - f[..., 1]),
+                     200 * (f[..., 1] - f[..., 2])], axis=-1)  # fmt: skip
+
+
+def delta_e(a, b):
+    return float(np.linalg.norm(lab(a) - lab(b)))
+
+
+def contrast(a, b):
+    la, lb = sorted(float(linear(c) @ [0.2126, 0.7152, 0.0722]) for c in (a, b))
+    return (lb + 0.05) / (la + 0.05)
+
+
+def test_machado_matrices_keep_white_and_black():
+    for m in MACHADO.values():
+        assert np.allclose(m.sum(axis=1), 1.0, atol=1e-3)  # grey stays grey
+
+
+def test_regression_red_and_green_axes_merged_for_deuteranopes():
+    """tab:red and tab:green, the old x and y axes, are 7 apart (CIE76) under deuteranopia."""
+    red, green = mc.to_rgb("tab:red"), mc.to_rgb("tab:green")
+    assert delta_e(simulate(red, "deuteranopia"), simulate(green, "deuteranopia")) < MIN_DELTA_E
+
+
+@pytest.mark.parametrize("kind", sorted(MACHADO))
+def test_frame_colours_stay_apart_under_colour_blindness(kind):
+    for a, b in itertools.combinations(plotting.FRAME_COLORS, 2):
+        d = delta_e(simulate(mc.to_rgb(a), kind), simulate(mc.to_rgb(b), kind))
+        assert d >= MIN_DELTA_E, f"{a} and {b} are {d:.1f} apart under {kind}"
+
+
+def test_line_colours_have_3_to_1_contrast_on_white():
+    for c in (*plotting.FRAME_COLORS, "#C04F00", "tab:purple"):
+        assert contrast(mc.to_rgb(c), (1, 1, 1)) >= 3.0, c
+
+
+def test_text_is_black_enough_for_4_5_to_1():
+    fig, ax = plotting.axes3d("A frame")
+    try:
+        colours = [ax.title.get_color(), ax.xaxis.label.get_color()]
+        assert all(contrast(mc.to_rgb(c), (1, 1, 1)) >= 4.5 for c in colours), colours
+    finally:
+        plt.close(fig)
+
+
+def _png_pixels(fig):
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=plotting.DPI)
+    return np.asarray(Image.open(buf).convert("RGB"), dtype=float) / 255.0
+
+
+@pytest.mark.parametrize("kind", sorted(MACHADO))
+def test_rendered_frame_axes_stay_apart_on_the_png(kind):
+    """The rendered PNG of a frame: the pixels of each axis, simulated, stay apart."""
+    fig, ax = plotting.axes3d("A frame")
+    plotting.draw_frame(ax, label="A")
+    try:
+        px = _png_pixels(fig).reshape(-1, 3)
+    finally:
+        plt.close(fig)
+    groups = []
+    for c in plotting.FRAME_COLORS:
+        near = px[np.linalg.norm(px - mc.to_rgb(c), axis=1) < 0.08]
+        assert len(near) > 30, f"axis colour {c} not found on the PNG"
+        groups.append(simulate(near, kind).mean(axis=0))
+    for (i, a), (j, b) in itertools.combinations(enumerate(groups), 2):
+        assert delta_e(a, b) >= MIN_DELTA_E, f"axes {i} and {j} merge under {kind}"
+
+
+def test_frame_axes_are_told_apart_by_their_names_too():
+    fig, ax = plotting.axes3d("A frame")
+    try:
+        plotting.draw_frame(ax, label="A")
+        names = {t.get_text() for t in ax.texts}
+    finally:
+        plt.close(fig)
+    assert len([n for n in names if n]) >= 3, names  # x, y, z labels, not colour alone
+
+
+def test_curves_of_the_double_cover_differ_in_line_style_and_label():
+    fig = double_cover()
+    try:
+        ax = fig.axes[0]
+        lines = [ln for ln in ax.get_lines() if not ln.get_label().startswith("_")]
+        styles = {ln.get_linestyle() for ln in lines}
+        labels = {ln.get_label() for ln in lines}
+    finally:
+        plt.close(fig)
+    assert len(lines) >= 2 and len(styles) == len(lines) and len(labels) == len(lines)

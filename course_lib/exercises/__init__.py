@@ -80,6 +80,7 @@ from ..symbolic import (
 from ._check import expected_shape_phrase, judge
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value
 from ._reading import Rejected
+from ._variants import identity_line, set_student_id, student_id, variant_index
 
 __all__ = [
     "EXERCISES",
@@ -92,7 +93,11 @@ __all__ = [
     "check",
     "exercises",
     "get",
+    "identity_line",
     "names",
+    "set_student_id",
+    "student_id",
+    "variant_index",
     "A",
     "B",
     "R",

@@ -8,14 +8,38 @@ that a repository tool generates from the instructor's reference solutions.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import re
+from dataclasses import dataclass, field, replace
 
 from .._verdict import Verdict
 
-__all__ = ["CheckResult", "Choice", "Exercise", "Expr", "LEVELS", "Value"]
+__all__ = ["CheckResult", "Choice", "Exercise", "Expr", "LEVELS", "Value", "fill_placeholders"]
 
 #: Levels in rising difficulty and the points an exercise of that level is worth.
 LEVELS = {"warm-up": 1, "core": 2, "challenge": 3}
+
+
+#: A placeholder of a variant's parameter in a statement, tip or hint: ``<<name>>``.
+PLACEHOLDER = re.compile(r"<<([A-Za-z_][A-Za-z0-9_]*)>>")
+
+
+def fill_placeholders(text, values):
+    """``text`` with every ``<<name>>`` replaced by ``values[name]`` (a string).
+
+    Raises
+    ------
+    ValueError
+        If a placeholder of ``text`` has no value; the message names it.
+
+    Examples
+    --------
+    >>> fill_placeholders("a turn by <<angle>> about <<axis>>", {"angle": "60°", "axis": "z"})
+    'a turn by 60° about z'
+    """
+    missing = sorted(set(PLACEHOLDER.findall(text)) - set(values))
+    if missing:
+        raise ValueError(f"values has no entry for the placeholders {missing} of the text")
+    return PLACEHOLDER.sub(lambda m: str(values[m.group(1)]), text)
 
 
 @dataclass(frozen=True, repr=False)
@@ -170,6 +194,30 @@ class Exercise:
             f"### {self.heading()}\n\n{self.statement.strip()}\n\n"
             f"Assign your answer to `{self.answer_variable}`; the cell after it checks "
             "the answer and shows ✓, or an error with a hint."
+        )
+
+    def placeholders(self):
+        """The names of the ``<<name>>`` placeholders of the statement, tip and hints."""
+        texts = [self.statement, self.tip, *self.mistakes.values()]
+        return sorted({n for text in texts for n in PLACEHOLDER.findall(text)})
+
+    def filled(self, values):
+        """This exercise with the placeholders of its statement, tip and hints filled in from
+        ``values`` (name -> text: a variant's numbers as they are shown).
+
+        Raises
+        ------
+        ValueError
+            If a placeholder has no value, or ``values`` names one the texts do not have.
+        """
+        extra = sorted(set(values) - set(self.placeholders()))
+        if extra:
+            raise ValueError(f"{self.name}: values names placeholders the texts lack: {extra}")
+        return replace(
+            self,
+            statement=fill_placeholders(self.statement, values),
+            tip=fill_placeholders(self.tip, values),
+            mistakes={k: fill_placeholders(v, values) for k, v in self.mistakes.items()},
         )
 
     def _repr_markdown_(self):

@@ -158,6 +158,13 @@ bench-gradescope: $(STAMP)
 test-gradescope: $(STAMP)
 	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q
 
+# What is too slow for `make test` (docs/testing.md), on two workers: the rest of the attacks on
+# grading through real nbgrader and the Gradescope autograder in a temporary /autograder.
+.PHONY: test-slow
+test-slow: $(STAMP)
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q -m "slow_grading or gradescope" \
+		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py
+
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every
 # chapter and problem set opened in JupyterLab; fails on any violation in the course's content.

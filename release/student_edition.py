@@ -40,7 +40,7 @@ INSTRUCTOR_MODULES = ("student.py",)  # course_lib modules students do not get
 TEST_TOOLS = ("pytest", "hypothesis", "nbval", "scipy")  # requirements-test.txt, same pins
 # A test file that matches is left out, for the reason in the group's name.
 INSTRUCTOR_TEST = re.compile(
-    r"(?P<tool>\bnbgrader\b|\bgrader\b|playwright|\bruff\b|\btools\b"
+    r"(?P<tool>\bnbgrader\b|\bgrader\b|playwright|\bruff\b|\btools\b|\be2e\b|\"site\""
     r"|course_lib\.student|import student\b)"
     r"|(?P<answers>course_lib\.exercises|exercise_bank|import exercises\b|\banswer_[a-z]"
     r"|solutions\b|SOLUTIONS)"

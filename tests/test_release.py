@@ -175,11 +175,16 @@ def test_student_tests_leave_out_what_names_answers_and_say_why(tmp_path):
     (tmp_path / "test_a.py").write_text("from course_lib import so3\n")
     (tmp_path / "test_b.py").write_text("answer_hat = omega * omega.T\n")
     (tmp_path / "test_c.py").write_text("import nbgrader\n")
+    # regression: a test of the e2e/ or site/ helpers, which the edition does not hold, was
+    # kept and failed the edition's make test at collection (ModuleNotFoundError: a11y_rules)
+    (tmp_path / "test_d.py").write_text('sys.path.insert(0, str(ROOT / "e2e"))\n')
+    (tmp_path / "test_e.py").write_text('build = ROOT / "site" / "build.py"\n')
     (tmp_path / "helpers.py").write_text("def f():\n    return 1\n")
     (tmp_path / "sanitize.cfg").write_text("[x]\n")
     kept, left_out = student_edition.student_tests(tmp_path)
     assert kept == ["helpers.py", "sanitize.cfg", "test_a.py"]
     assert "answers" in left_out["test_b.py"] and "tool" in left_out["test_c.py"]
+    assert "tool" in left_out["test_d.py"] and "tool" in left_out["test_e.py"]
 
 
 # ------------------------------------------------------------------------------ the needles

@@ -78,6 +78,8 @@ def pytest_collection_modifyitems(items):
     for item in items:
         if type(item).__name__ == "IPyNbCell":  # nbval's item class
             item.add_marker(pytest.mark.notebook_exec)
+        if "browser" in getattr(item, "fixturenames", ()):  # the site tests' Chromium fixture
+            item.add_marker(pytest.mark.browser)
 
 
 def pytest_runtest_setup(item):

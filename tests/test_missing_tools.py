@@ -48,3 +48,16 @@ def test_ci_makes_every_missing_tool_a_failure():
     ci = (ROOT / ".ci" / "run").read_text()
     for tool in root_conftest.TOOLS.values():
         assert re.search(rf"^export .*\b{tool.required_by}=1\b", ci, re.MULTILINE), tool.what
+
+
+def test_a_test_using_the_browser_fixture_is_marked_browser():
+    """site/test_site.py's tests that open Chromium (through its ``browser`` fixture) carry the
+    ``browser`` marker, so without Chromium they are skipped with the one summary line."""
+    done = subprocess.run(
+        [sys.executable, "-m", "pytest", "--collect-only", "-q", "-m", "browser",
+         "site/test_site.py", "-p", "no:cacheprovider"],
+        cwd=ROOT, capture_output=True, text=True,
+    )  # fmt: skip
+    collected = [line for line in done.stdout.splitlines() if "::" in line]
+    assert any("test_markdown_tables_are_tables" in line for line in collected), done.stdout
+    assert not any("test_instructor_banner" in line for line in collected), done.stdout

@@ -78,7 +78,7 @@ from ..symbolic import (
     z,
 )
 from ._check import expected_shape_phrase, judge
-from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value
+from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants
 from ._reading import Rejected
 from ._variants import identity_line, set_student_id, student_id, variant_index
 
@@ -90,11 +90,13 @@ __all__ = [
     "Exercise",
     "Expr",
     "Value",
+    "Variants",
     "check",
     "exercises",
     "get",
     "identity_line",
     "names",
+    "parameters",
     "set_student_id",
     "student_id",
     "variant_index",
@@ -171,6 +173,29 @@ def exercises(chapter=None):
             f"chapter must be one of {sorted(exercise_bank.CHAPTERS)}, got {chapter!r}"
         )
     return [ex for ex in _registry().values() if ex.chapter == chapter]
+
+
+def parameters(name):
+    """The parameters of exercise ``name`` in the current student's variant (a copy).
+
+    Raises
+    ------
+    KeyError
+        If ``name`` is not an exercise; the message lists the known names.
+    ValueError
+        If the exercise has no variants (its numbers are in its statement).
+
+    Examples
+    --------
+    >>> parameters("hat_fifth")
+    Traceback (most recent call last):
+    ...
+    ValueError: exercise hat_fifth has no variants: its numbers are in its statement
+    """
+    ex = get(name)
+    if ex.variants is None:
+        raise ValueError(f"exercise {name} has no variants: its numbers are in its statement")
+    return json.loads(json.dumps(ex.variants.default))
 
 
 @lru_cache(maxsize=1)

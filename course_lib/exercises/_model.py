@@ -13,7 +13,17 @@ from dataclasses import dataclass, field, replace
 
 from .._verdict import Verdict
 
-__all__ = ["CheckResult", "Choice", "Exercise", "Expr", "LEVELS", "Value", "fill_placeholders"]
+__all__ = [
+    "CheckResult",
+    "Choice",
+    "Exercise",
+    "Expr",
+    "LEVELS",
+    "Value",
+    "Variants",
+    "fill_placeholders",
+    "format_parameter",
+]
 
 #: Levels in rising difficulty and the points an exercise of that level is worth.
 LEVELS = {"warm-up": 1, "core": 2, "challenge": 3}
@@ -21,6 +31,58 @@ LEVELS = {"warm-up": 1, "core": 2, "challenge": 3}
 
 #: A placeholder of a variant's parameter in a statement, tip or hint: ``<<name>>``.
 PLACEHOLDER = re.compile(r"<<([A-Za-z_][A-Za-z0-9_]*)>>")
+
+
+def format_parameter(value):
+    r"""A variant's parameter as the statement shows it (LaTeX, inside ``$...$``).
+
+    An int as itself, a float with ``:g``, a string as it is (exact values are written as
+    LaTeX strings), a list of numbers as a tuple, a list of lists as a matrix by rows.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not an int, float, str or a (nested) list of them.
+
+    Examples
+    --------
+    >>> format_parameter([1, -1, 0])
+    '(1,\\ -1,\\ 0)'
+    >>> format_parameter([[1, 0], [0, 1]])
+    '\\begin{pmatrix} 1 & 0 \\\\ 0 & 1 \\end{pmatrix}'
+    >>> format_parameter(0.5), format_parameter(3), format_parameter(r"\sqrt{13}")
+    ('0.5', '3', '\\sqrt{13}')
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float, str, list)):
+        raise TypeError(
+            f"value must be an int, float, str or a list of them, got {type(value).__name__}"
+        )
+    if isinstance(value, str):
+        return value
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return f"{value:g}"
+    if value and all(isinstance(row, list) for row in value):
+        rows = " \\\\ ".join(" & ".join(format_parameter(v) for v in row) for row in value)
+        return f"\\begin{{pmatrix}} {rows} \\end{{pmatrix}}"
+    return "(" + ",\\ ".join(format_parameter(v) for v in value) + ")"
+
+
+@dataclass(frozen=True)
+class Variants:
+    """The variants of a numeric exercise: its variant ``key`` (exercises that share numbers
+    share a key) and ``default``, the parameters of variant 0 (the numbers everyone had before
+    variants; a student with no id, or a course with variants off, gets these).
+
+    Examples
+    --------
+    >>> Variants("ch04_frames", {"v_c": [1, 2, 3]}).default["v_c"]
+    [1, 2, 3]
+    """
+
+    key: str
+    default: dict
 
 
 def fill_placeholders(text, values):
@@ -149,6 +211,9 @@ class Exercise:
     properties : tuple
         ``(residual, message)`` pairs for symbolic answers: ``residual(M)`` (M the answer as an
         explicit matrix) must vanish; the first that does not gives ``message`` as hint.
+    variants : Variants or None
+        For a numeric exercise drawn per student: its variant key and default parameters; the
+        ``<<name>>`` placeholders of its texts name parameters.
     """
 
     name: str
@@ -161,6 +226,7 @@ class Exercise:
     tip: str = ""
     mistakes: dict = field(default_factory=dict)
     properties: tuple = ()
+    variants: Variants | None = None
 
     def __post_init__(self):
         if self.level not in LEVELS:

@@ -139,7 +139,7 @@ def _first_sentence(source):
     if not paragraphs:
         return None
     text = re.sub(r"[*_`$\\#>]", "", paragraphs[0])
-    return " ".join(text.split())[:200]
+    return " ".join(text.split())[:200].rstrip()
 
 
 def _alt_text(cells, i):

@@ -68,4 +68,6 @@ def test_not_a_figure_is_refused():
 
 def test_other_html_is_not_taken_for_a_figure():
     assert figure_alt_and_png('<img alt="x" src="data:image/png;base64,AAAA">') is None
-    assert figure_alt_and_png('<img class="course-figure" alt="x" src="https://e.org/a.png">') is None
+    assert (
+        figure_alt_and_png('<img class="course-figure" alt="x" src="https://e.org/a.png">') is None
+    )

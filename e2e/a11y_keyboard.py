@@ -5,9 +5,10 @@
 The notebook is opened and run (e2e's :class:`run_e2e.Lab`); in its first explorer, from the
 first slider the Tab key moves through every slider (each with a label that names it, the same
 name on the focused handle itself, ``aria-label``, and a visible focus), the arrow keys change
-each one, and the figure is redrawn after each change (WCAG 2.1.1, 2.4.7, 4.1.2). The first slider is focused from the page with ``focus()`` (as a
-screen reader's "next control" would land on it: Tab through a whole JupyterLab notebook passes
-hundreds of editor stops first); after that no mouse and no click. Exit status 0 when it holds.
+each one, and the figure is redrawn after each change (WCAG 2.1.1, 2.4.7, 4.1.2). The first
+slider is focused from the page with ``focus()`` (as a screen reader's "next control" would land
+on it: Tab through a whole JupyterLab notebook passes hundreds of editor stops first); after
+that no mouse and no click. Exit status 0 when it holds.
 """
 
 import functools

@@ -176,4 +176,5 @@ a11y: $(SITE_STAMP)
 	$(BIN)/python site/build.py --solutions
 	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
 	$(BIN)/python e2e/a11y_keyboard.py
+	$(BIN)/python e2e/a11y_math_lab.py
 	$(BIN)/python e2e/a11y.py

@@ -3,11 +3,12 @@
     python e2e/a11y_keyboard.py [NOTEBOOK]   (default: notebooks/02_rotations.ipynb)
 
 The notebook is opened and run (e2e's :class:`run_e2e.Lab`); in its first explorer, from the
-first slider the Tab key moves through every slider (each with a label that names it and a
-visible focus), the arrow keys change each one, and the figure is redrawn after each change
-(WCAG 2.1.1, 2.4.7, 4.1.2). The first slider is focused from the page with ``focus()`` (as a
-screen reader's "next control" would land on it: Tab through a whole JupyterLab notebook passes
-hundreds of editor stops first); after that no mouse and no click. Exit status 0 when it holds.
+first slider the Tab key moves through every slider (each with a label that names it, the same
+name on the focused handle itself, ``aria-label``, and a visible focus), the arrow keys change
+each one, and the figure is redrawn after each change (WCAG 2.1.1, 2.4.7, 4.1.2). The first
+slider is focused from the page with ``focus()`` (as a screen reader's "next control" would land
+on it: Tab through a whole JupyterLab notebook passes hundreds of editor stops first); after
+that no mouse and no click. Exit status 0 when it holds.
 """
 
 import functools
@@ -53,6 +54,8 @@ def drive(page, problems, timeout=60):
         name = focus["label"] or focus["aria"]
         if not name:
             problems.append(f"slider {s} has no label")
+        elif focus["aria"] != focus["label"]:  # what a screen reader says on the handle
+            problems.append(f"slider {s} ({name!r}): its handle is named {focus['aria']!r}")
         if not focus["outline"]:  # a ring drawn for the focus, not a shadow always there
             problems.append(f"slider {s} ({name!r}): no visible focus ring (outline)")
         before = page.evaluate(js("widget_figure"), [0, focus["index"]])

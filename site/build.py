@@ -37,6 +37,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 import course_links  # noqa: E402
 
 import notebooks as nbtool  # noqa: E402
+from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
 
 BUILD = ROOT / "build"
 DEPS = BUILD / "site-deps"
@@ -138,7 +139,7 @@ def _first_sentence(source):
     if not paragraphs:
         return None
     text = re.sub(r"[*_`$\\#>]", "", paragraphs[0])
-    return " ".join(text.split())[:200]
+    return " ".join(text.split())[:200].rstrip()
 
 
 def _alt_text(cells, i):
@@ -181,11 +182,24 @@ def _still(output):
     return [output, note] if "image/png" in data else [note]
 
 
+def _figure_as_png(output):
+    """A figure shown by ``plotting.show`` (an HTML <img> with its alt text) as an image/png
+    output, as every other figure: Sphinx writes it to ``_images/`` with the same alt text."""
+    data = output.get("data", {})
+    html = data.get("text/html")
+    found = figure_alt_and_png("".join(html) if isinstance(html, list) else html or "")
+    if found is None:
+        return output
+    alt, png = found
+    output["data"] = {"image/png": png, "text/plain": alt}
+    return output
+
+
 def finish(nb):
     """Explorers to their still pictures, alt text for every figure, clean."""
     for i, cell in enumerate(nb.cells):
         outputs = []
-        for output in cell.get("outputs", []):
+        for output in map(_figure_as_png, cell.get("outputs", [])):
             if nbtool.WIDGET_VIEW in output.get("data", {}) or output.get("metadata", {}).get(
                 nbtool.EXPLORER_STILL
             ):

@@ -2,7 +2,9 @@
 every chapter gets alt text that says what it shows (the site takes it from the markdown cell
 under the figure), and the rules themselves reject what they must."""
 
+import base64
 import importlib.util
+import io
 import json
 import re
 import sys
@@ -10,6 +12,9 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from PIL import Image
+
+from course_lib.plotting.display import figure_alt_and_png
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "e2e"))
@@ -52,6 +57,42 @@ def test_a_figure_without_a_caption_gets_no_acceptable_alt_text():
     assert alt_text_problem(_site_build()._alt_text(nb.cells, 0)) is not None
 
 
+def _html(output):
+    html = output.get("data", {}).get("text/html", "")
+    return "".join(html) if isinstance(html, list) else html
+
+
+def _is_figure(output):
+    return "image/png" in output.get("data", {}) or figure_alt_and_png(_html(output)) is not None
+
+
+def lab_alt_problems(nb):
+    """What JupyterLab would show without alt text, in the stored outputs of ``nb``.
+
+    JupyterLab writes no alt for an ``image/png`` output; a figure is shown with its alt text
+    only as ``plotting.show``'s ``<img alt>`` (an explorer's still is replaced by the live
+    widget when the cell runs). Each figure's alt text must be the site's, and describe it.
+    """
+    problems, alt_text = [], _site_build()._alt_text
+    for i, cell in enumerate(nb.cells):
+        for o in cell.get("outputs", []):
+            where = f"cell {i} ({cell.source[:50]!r})"
+            if "image/png" in o.get("data", {}) and not o.get("metadata", {}).get("explorer_still"):
+                problems.append(f"{where}: an image/png output (no alt text in JupyterLab)")
+            found = figure_alt_and_png(_html(o))
+            if found:
+                alt, png = found
+                problem = alt_text_problem(alt)
+                if problem or alt != alt_text(nb.cells, i):
+                    problems.append(f"{where}: alt {alt!r}: {problem or 'not the caption'}")
+                if Image.open(io.BytesIO(base64.b64decode(png))).mode != "P":
+                    problems.append(f"{where}: not a palette PNG (run `make notebooks`)")
+            for img in re.findall(r"<img\b[^>]*>", _html(o)):
+                if not re.search(r'\balt="[^"]+"', img):
+                    problems.append(f"{where}: an <img> without alt text")
+    return problems
+
+
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.stem)
 def test_every_figure_of_the_chapter_has_alt_text_that_describes_it(path):
     nb = nbformat.read(path, as_version=4)
@@ -59,16 +100,39 @@ def test_every_figure_of_the_chapter_has_alt_text_that_describes_it(path):
     figures = 0
     for i, cell in enumerate(nb.cells):
         outputs = cell.get("outputs", [])
-        if any("image/png" in o.get("data", {}) for o in outputs):
+        if any(_is_figure(o) for o in outputs):
             figures += 1
             problem = alt_text_problem(alt_text(nb.cells, i))
             assert problem is None, f"cell {i} ({cell.source[:60]!r}): {problem}"
         for o in outputs:  # the animation player's frames carry their own alt text
-            html = "".join(o.get("data", {}).get("text/html", ""))
+            html = _html(o)
             for alt in re.findall(r'<img id="_anim_img[^>]*\balt="([^"]*)"', html):
                 assert alt_text_problem(alt) is None
             assert '<img id="_anim_img' not in html or "aria-label=" in html
     assert figures > 0
+
+
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.stem)
+def test_every_figure_shown_in_jupyterlab_has_the_sites_alt_text(path):
+    """Regression (axe image-alt in JupyterLab): the figures were image/png outputs, which
+    JupyterLab 4 shows as an <img> without alt; plotting.show gives them the site's alt text."""
+    assert lab_alt_problems(nbformat.read(path, as_version=4)) == []
+
+
+def test_a_figure_output_without_alt_text_fails():
+    nb = nbformat.read(CHAPTERS[0], as_version=4)
+    i, output = next(
+        (i, o) for i, c in enumerate(nb.cells) for o in c.get("outputs", []) if _is_figure(o)
+    )
+    _, png = figure_alt_and_png(_html(output))
+    output["data"] = {"image/png": png, "text/plain": "<Figure size 432x432 with 1 Axes>"}
+    assert any("image/png output" in p for p in lab_alt_problems(nb))
+    output["data"] = {"text/html": f'<img src="data:image/png;base64,{png}">'}
+    assert any("without alt" in p for p in lab_alt_problems(nb))
+    output["data"] = {
+        "text/html": f'<img class="course-figure" alt="Figure 3" src="data:image/png;base64,{png}">'
+    }
+    assert any("Figure 3" in p for p in lab_alt_problems(nb))
 
 
 def test_the_animation_has_alt_text_and_a_labelled_slider():

@@ -10,7 +10,8 @@ notebook, ``--apply``:
    ``.whl``), or, while none is set, says in plain words what a student can do (ask for the
    course link, or open the notebook from the course's hub);
 2. executes the notebook in a fresh kernel, in its own folder, without recording timings;
-3. cleans it: no widget state, no execution timestamps, widget views without model ids,
+3. cleans it: no widget state, no execution timestamps, no script naming the explorers' slider
+   handles (it needs the live widget), widget views without model ids,
    deterministic animation ids, PNGs re-encoded with a 128-colour palette;
 4. writes the file only if its text changed, and prints the size and execution time.
 
@@ -47,6 +48,9 @@ SETUP_ID = "course-setup"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 #: Output metadata key of an explorer's stored still picture (its widget view removed).
 EXPLORER_STILL = "explorer_still"
+#: Output metadata key of the script that names an explorer's slider handles (not stored: it
+#: has nothing to name without the live widget; course_lib.interactive.widgets.SLIDER_NAMES).
+SLIDER_NAMES = "course_slider_names"
 PNG_COLOURS = 128
 CELL_TIMEOUT = 300  # seconds; a safety net, never reached (chapters take well under 60 s)
 _UUID_HEX = re.compile(r"(?<![0-9a-f])[0-9a-f]{32}(?![0-9a-f])")
@@ -171,6 +175,8 @@ def clean(nb):
     nb.metadata.get("language_info", {}).pop("version", None)
     for cell in nb.cells:
         cell.metadata.pop("execution", None)
+        if "outputs" in cell:
+            cell.outputs = [o for o in cell.outputs if not o.get("metadata", {}).get(SLIDER_NAMES)]
         for output in cell.get("outputs", []):
             clean_output(output, cell.get("id", ""))
     return nb

@@ -93,6 +93,38 @@ _FOCUS_STYLE = (
 )
 
 
+# WCAG 4.1.2: ipywidgets 8 draws a FloatSlider's handle as a noUiSlider <div role="slider"> and
+# its description as a <label> tied to nothing: a screen reader hears the value, not the name.
+# The model has no trait that reaches the handle, so this script (run by JupyterLab for the
+# trusted output of a cell just run, next to the explorer) names every handle of the explorers
+# after its slider's label, now and whenever ipywidgets redraws one. Installed once a page.
+#: Output metadata key of that script's output (tools/notebooks.py does not store it).
+SLIDER_NAMES = "course_slider_names"
+_SLIDER_NAMES_JS = """
+(function () {
+  if (window.courseSliderNames) { window.courseSliderNames(); return; }
+  var pending = false;
+  function name() {
+    pending = false;
+    document.querySelectorAll('.course-explorer .widget-slider').forEach(function (box) {
+      var label = box.querySelector('.widget-label');
+      var text = label ? label.textContent.trim() : '';
+      box.querySelectorAll('.noUi-handle').forEach(function (handle) {
+        if (text && handle.getAttribute('aria-label') !== text) {
+          handle.setAttribute('aria-label', text);
+        }
+      });
+    });
+  }
+  window.courseSliderNames = name;
+  new MutationObserver(function () {
+    if (!pending) { pending = true; window.requestAnimationFrame(name); }
+  }).observe(document.body, {childList: true, subtree: true});
+  name();
+})();
+"""
+
+
 def _slider(spec):
     lo, hi = spec.bounds
     value = _scalar_angle(spec.value, spec.description)
@@ -290,6 +322,17 @@ class Explorer(ipywidgets.VBox):
     def snapshot(self):
         """The figure as it is now, as PNG bytes (a small palette image)."""
         return _palette_png(self.figure)
+
+    def _ipython_display_(self):
+        from IPython.display import display
+
+        display(self._repr_mimebundle_(), raw=True)
+        if self.live:
+            display(
+                {"application/javascript": _SLIDER_NAMES_JS},
+                raw=True,
+                metadata={SLIDER_NAMES: True},
+            )
 
     def _repr_mimebundle_(self, **kwargs):
         png = base64.b64encode(self.snapshot()).decode("ascii")

@@ -59,6 +59,7 @@ module                          what it holds
 :mod:`.figures_accuracy`        error plots: the series' convergence, errors near a limit
 :mod:`.figures_composition`     chapter 04: frames side by side, the geodesic
 :mod:`.figures_orientation`     chapter 05: Euler turns, gimbal lock, the double cover, slerp
+:mod:`.display`                 :func:`show`: a figure shown with its alt text (not ``plt.show()``)
 ==============================  ===============================================================
 
 Input is checked by the one validation layer, :mod:`course_lib._arrays`.
@@ -68,6 +69,7 @@ from .axes import DPI, FONT_SIZE, TITLE_SIZE, axes2d, axes3d, axes_row
 from .axes import FIGSIZE as FIGSIZE
 from .axes import PANEL_SIZE as PANEL_SIZE
 from .axes import _require_3d as _require_3d  # course_lib.interactive checks its axes with it
+from .display import figure_output, show
 from .figures_accuracy import plot_convergence, plot_error_curves
 from .figures_composition import frame_panels, plot_geodesic
 from .figures_exponential import draw_pendulum, plot_rodrigues_circle
@@ -120,4 +122,6 @@ __all__ = [
     "slerp_speed",
     "angle_streams",
     "plot_rodrigues_circle",
+    "show",
+    "figure_output",
 ]

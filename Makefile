@@ -37,9 +37,11 @@ test: $(STAMP)
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -m "not notebook_exec" -q
 
-# Put the setup cell first, execute and clean every chapter and problem set (idempotent: a
+# Give each figure's plotting.show the caption under it as alt text (tools/alt_text.py), put the
+# setup cell first, execute and clean every chapter and problem set (idempotent: a
 # re-run changes nothing), then refresh the README's launch links from pyproject.toml.
 notebooks: $(STAMP)
+	$(BIN)/python tools/alt_text.py --apply notebooks/[0-9]*.ipynb
 	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb problem_sets/ps*.ipynb
 	$(BIN)/python tools/course_links.py --readme
 

@@ -13,6 +13,11 @@ VAGUE_LINKS = {"here", "click here", "link", "this", "more", "read more", "this 
 _GENERIC_ALT = re.compile(
     r"^\s*(figure|fig\.?|image|img|plot|picture|graph|chart)?\s*\d*\s*$", re.I
 )
+#: LaTeX left in alt text, or what is left of it once ``$`` and backslashes are stripped
+#: ("cosfractheta2", "45^circ", "sqrt2").
+_RAW_LATEX = re.compile(
+    r"\\[A-Za-z]+|[_^]\{|\^circ|\bcirc\b|\bsqrt|\w*(?:frac(?!tion)|operatorname|mathbb)\w*"
+)
 _CODE_ALT = re.compile(
     r"(\b\w+\.\w+\(|^\s*(import\s|from\s+\w+\s+import|plt\.|fig\s*,|ax\s*=)|^\s*\w+\s*=\s*\w+[.(])"
 )
@@ -22,7 +27,8 @@ def alt_text_problem(alt):
     """Why ``alt`` does not describe a figure, or None when it may.
 
     An image needs alt text that says what it shows (WCAG 1.1.1): not empty, not a generic
-    word or number ("Figure", "figure 3", "image"), not the code that drew it.
+    word or number ("Figure", "figure 3", "image"), not the code that drew it, no raw LaTeX
+    ("\\theta", "cosfrac"), whole sentences.
 
     Examples
     --------
@@ -44,6 +50,10 @@ def alt_text_problem(alt):
         return f"alt text {text!r} is code: say what the figure shows"
     if len(text.split()) < 3:
         return f"alt text {text!r} is too short to say what the figure shows"
+    if _RAW_LATEX.search(text):
+        return f"alt text {text!r} holds raw LaTeX: a screen reader spells it out letter by letter"
+    if not text.endswith((".", "!", "?", ")")):
+        return f"alt text {text!r} stops mid-sentence: end it with a whole sentence"
     return None
 
 

@@ -12,7 +12,7 @@
 3. Each notebook is executed and cleaned by tools/notebooks.py (no stall after widget cells,
    palette PNGs). An explorer's output keeps its still picture (the widget view goes: without a
    kernel no slider moves anything) and gets one line under it saying why it is still; every
-   figure gets alt text: the first sentence of the markdown cell under it.
+   figure gets alt text: its caption as plain text (tools/alt_text.py).
 4. Sphinx + myst-nb render the pages offline: MathJax comes from the npm package installed in
    build/site-deps/, copied into the site's ``_static/``; site/static/course.css keeps every
    page within the window (wide formulas, code and outputs scroll inside their own box).
@@ -35,6 +35,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT / "tools"))
 
 import course_links  # noqa: E402
+from alt_text import figure_alt  # noqa: E402
 
 import notebooks as nbtool  # noqa: E402
 from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
@@ -133,32 +134,6 @@ def launch_line(url, name):
     return "*Run this chapter yourself:* " + " · ".join(links)
 
 
-def _first_sentence(source):
-    """The first paragraph of a markdown cell that is not a heading, as plain text."""
-    paragraphs = [p for p in source.strip().split("\n\n") if p and not p.lstrip().startswith("#")]
-    if not paragraphs:
-        return None
-    text = re.sub(r"[*_`$\\#>]", "", paragraphs[0])
-    return " ".join(text.split())[:200].rstrip()
-
-
-def _alt_text(cells, i):
-    """The alt text of the figure of cell i: the caption under it (the first paragraph of the
-    next markdown cell, when it is not a new section), else the text that introduces it (the
-    markdown cell before, e.g. an explorer's "Explore" section), else "Figure" (which
-    tests/test_a11y_rules.py rejects)."""
-    for cell in cells[i + 1 : i + 3]:
-        if cell.cell_type == "markdown" and cell.source.strip():
-            if not cell.source.lstrip().startswith("#"):
-                return _first_sentence(cell.source)
-            break
-    if i > 0 and cells[i - 1].cell_type == "markdown":
-        text = _first_sentence(cells[i - 1].source)
-        if text:
-            return text
-    return "Figure"
-
-
 def prepare(nb, name, url):
     nb.cells = [c for c in nb.cells if c.get("id") != nbtool.SETUP_ID]
     nb.cells.insert(1, nbformat.v4.new_markdown_cell(launch_line(url, name)))
@@ -209,7 +184,7 @@ def finish(nb):
         if "outputs" in cell:
             cell.outputs = outputs
         if any("image/png" in o.get("data", {}) for o in outputs):
-            cell.metadata["mystnb"] = {"image": {"alt": _alt_text(nb.cells, i)}}
+            cell.metadata["mystnb"] = {"image": {"alt": figure_alt(nb.cells, i)}}
     return nbtool.clean(nb)
 
 

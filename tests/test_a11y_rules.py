@@ -3,7 +3,6 @@ every chapter gets alt text that says what it shows (the site takes it from the 
 under the figure), and the rules themselves reject what they must."""
 
 import base64
-import importlib.util
 import io
 import json
 import re
@@ -20,13 +19,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "e2e"))
 from a11y_rules import alt_text_problem, structure_problems  # noqa: E402
 
-
-def _site_build():
-    spec = importlib.util.spec_from_file_location("site_build", ROOT / "site" / "build.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
+sys.path.insert(0, str(ROOT / "tools"))
+from alt_text import figure_alt  # noqa: E402
 
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb"))
 
@@ -54,7 +48,7 @@ def test_a_figure_without_a_caption_gets_no_acceptable_alt_text():
     """A figure with no markdown cell after it: the site would write "Figure"; that fails."""
     nb = nbformat.v4.new_notebook()
     nb.cells = [nbformat.v4.new_code_cell("fig"), nbformat.v4.new_code_cell("x = 1")]
-    assert alt_text_problem(_site_build()._alt_text(nb.cells, 0)) is not None
+    assert alt_text_problem(figure_alt(nb.cells, 0)) is not None
 
 
 def _html(output):
@@ -73,7 +67,7 @@ def lab_alt_problems(nb):
     only as ``plotting.show``'s ``<img alt>`` (an explorer's still is replaced by the live
     widget when the cell runs). Each figure's alt text must be the site's, and describe it.
     """
-    problems, alt_text = [], _site_build()._alt_text
+    problems, alt_text = [], figure_alt
     for i, cell in enumerate(nb.cells):
         for o in cell.get("outputs", []):
             where = f"cell {i} ({cell.source[:50]!r})"
@@ -96,7 +90,7 @@ def lab_alt_problems(nb):
 @pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.stem)
 def test_every_figure_of_the_chapter_has_alt_text_that_describes_it(path):
     nb = nbformat.read(path, as_version=4)
-    alt_text = _site_build()._alt_text
+    alt_text = figure_alt
     figures = 0
     for i, cell in enumerate(nb.cells):
         outputs = cell.get("outputs", [])
@@ -117,6 +111,25 @@ def test_every_figure_shown_in_jupyterlab_has_the_sites_alt_text(path):
     """Regression (axe image-alt in JupyterLab): the figures were image/png outputs, which
     JupyterLab 4 shows as an <img> without alt; plotting.show gives them the site's alt text."""
     assert lab_alt_problems(nbformat.read(path, as_version=4)) == []
+
+
+@pytest.mark.parametrize(
+    "alt",
+    [r"Figure: the scalar part w = cosfractheta2 of the quaternion", r"a turn by 45^circ about z.",
+     r"Figure: w = \cos\theta of the turn.", "Figure: the dashed segment from p1 to p2 has the"],
+)  # fmt: skip
+def test_alt_text_with_raw_latex_or_cut_off_fails(alt):
+    """Regression: the chapters' alt texts were the captions with $ and \\ stripped, cut at 200
+    characters ("w = cosfractheta2 ...", "... has the same ")."""
+    assert alt_text_problem(alt) is not None
+
+
+def test_the_caption_becomes_plain_text_a_screen_reader_reads():
+    source = (
+        r"*Figure: $w = \cos\frac\theta2$, $R_z(60^\circ)$, $\dots$, $\dot q = \omega \times q$.*"
+    )
+    cells = [nbformat.v4.new_code_cell("fig"), nbformat.v4.new_markdown_cell(source)]
+    assert figure_alt(cells, 0) == "Figure: w = cos θ/2, Rz(60°), …, q̇ = ω × q."
 
 
 def test_a_figure_output_without_alt_text_fails():
@@ -193,3 +206,19 @@ def test_chapter_links_have_meaningful_text():
             for text in re.findall(r"\[([^\]]*)\]\([^)]*\)", "".join(cell["source"])):
                 links = [{"text": text, "href": "?"}]
                 assert structure_problems(_page(links=links)) == [], (path.name, text)
+
+
+def test_alt_text_tool_gives_a_stale_show_call_its_caption_and_keeps_the_rest():
+    """tools/alt_text.py --apply: the call's text becomes the caption; code around it (with
+    non-ASCII before the call, where ast counts bytes) is kept; a second run changes nothing."""
+    from alt_text import rewrite
+
+    code = 'label = "θ = 30°"\nplot.show(\n    "Figure: old text, cut off at"\n)\nprint(label)'
+    caption = r"*Figure: a turn by $\theta = 30^\circ$ about $z$.*"
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell(code), nbformat.v4.new_markdown_cell(caption)]
+    assert rewrite(nb) == [0]
+    assert nb.cells[0].source == (
+        'label = "θ = 30°"\nplot.show(\n    "Figure: a turn by θ = 30° about z."\n)\nprint(label)'
+    )
+    assert rewrite(nb) == []

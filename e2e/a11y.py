@@ -31,7 +31,7 @@ import threading
 from pathlib import Path
 
 from a11y_rules import WCAG_TAGS, structure_problems
-from common import ROOT, CheckFailed, js, log
+from common import ROOT, CheckFailed, KernelStalled, js, log
 
 AXE = "axe-core@4.10.3"
 DEPS = ROOT / "build" / "a11y-deps"
@@ -153,31 +153,47 @@ def check_site(browser, site):
     return rows, failures, results
 
 
-def check_lab(pw, paths, timeout=240):
-    """(rows, failure lines, results) for every notebook of ``paths`` opened in JupyterLab."""
+def _axe_notebook(lab, nb, timeout):
+    """axe's result on notebook ``nb`` opened and run in ``lab``; CheckFailed if it cannot run."""
     from notebook_checks import open_and_run
+
+    page = lab.context.new_page()
+    try:
+        open_and_run(page, lab.server, nb, [], timeout)
+        page.evaluate(js("sweep"))
+        page.wait_for_timeout(500)
+        return run_axe(page, LAB_CONTENT, LAB_NOT_CONTENT)
+    finally:
+        try:
+            page.evaluate(js("shutdown_kernel"))
+        except Exception:
+            pass
+        page.close()
+
+
+def check_lab(pw, paths, timeout=240):
+    """(rows, failure lines, results) for every notebook of ``paths`` opened in JupyterLab.
+
+    A stalled kernel (cells left queued while it says idle, :class:`common.KernelStalled`) is
+    retried once on a new server with a new browser profile, as ``run_e2e`` does; a real defect
+    fails twice."""
     from run_e2e import Lab
 
     rows, failures, results = [], [], []
     lab = Lab(pw, paths, fixtures=False)
     try:
         for nb in lab.notebooks:
-            page = lab.context.new_page()
-            problems = []
             try:
-                open_and_run(page, lab.server, nb, problems, timeout)
-                page.evaluate(js("sweep"))
-                page.wait_for_timeout(500)
-                result = run_axe(page, LAB_CONTENT, LAB_NOT_CONTENT)
+                try:
+                    result = _axe_notebook(lab, nb, timeout)
+                except KernelStalled as exc:
+                    log(f"  {nb}: kernel stalled ({exc}); retrying once on a new JupyterLab")
+                    lab.close()
+                    lab = Lab(pw, paths, fixtures=False)
+                    result = _axe_notebook(lab, nb, timeout)
             except CheckFailed as exc:
                 failures.append(f"{nb}: could not be checked: {exc}")
                 continue
-            finally:
-                try:
-                    page.evaluate(js("shutdown_kernel"))
-                except Exception:
-                    pass
-                page.close()
             rows.append(row(nb, result))
             failures += details(nb, result, [])
             results.append(result)

@@ -45,13 +45,22 @@ notebooks: $(STAMP)
 	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb problem_sets/ps*.ipynb
 	$(BIN)/python tools/course_links.py --readme
 
-# After editing an exercise (its bank entry, its solution in tools/solutions): the checker's
-# fingerprints, the problem sets (hidden tests and hand-made cells kept) and the chapters'
+# After editing an exercise (its bank entry, its solution in tools/solutions): the variant
+# tables (tools/variant_tables.py), the checker's fingerprints, the problem sets (hidden tests and hand-made cells kept) and the chapters'
 # pointers, then the problem sets executed. One command; a re-run changes nothing.
 exercises: $(STAMP)
+	$(BIN)/python tools/variant_tables.py
 	$(BIN)/python tools/exercise_fingerprints.py
 	$(BIN)/python tools/sync_exercises.py
 	$(BIN)/python tools/notebooks.py --apply problem_sets/ps*.ipynb
+
+# One student's numbers and answers for a problem set: `make variant STUDENT=id PS=ps04`
+# (tools/show_variant.py; the id as the grader gets it). Variants on/off for the course:
+# `.venv/bin/python tools/variant_tables.py --on` / `--off`, then `make exercises`.
+.PHONY: variant
+variant: $(STAMP)
+	@test -n "$(STUDENT)" -a -n "$(PS)" || { echo "usage: make variant STUDENT=id PS=psNN"; exit 2; }
+	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)"
 
 # The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
 # build/site-instructor/ with a banner on every page (never over the student site). Its tools

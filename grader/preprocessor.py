@@ -266,7 +266,8 @@ class VerifyRecords(NbGraderPreprocessor):
             note = "no answer record" if not records else f"{len(records)} answer records"
             cell.outputs = [note_output(f"{name}: 0 points: {note} in the check cell's output.")]
             return cell, resources
-        result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])))
+        student = resources.get("nbgrader", {}).get("student")  # nbgrader's, not the notebook's
+        result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])), student)
         if not result.ok:
             note = note_output(f"{name}: 0 points from the grader: {result.note}.")
             hint = _hint(cell)

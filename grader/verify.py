@@ -36,11 +36,12 @@ from course_lib.exercises import EXERCISES, Choice, Value
 from course_lib.exercises import _engine as E
 from course_lib.exercises._check import form_violation
 from course_lib.exercises._reading import Rejected, read_answer, read_choice
+from course_lib.exercises._variants import table, variant_of
 from course_lib.tolerance import TOL
 
 from .records import Unreadable, parse
 
-__all__ = ["Verdict", "verdict", "expected", "fresh_points", "SOLUTIONS"]
+__all__ = ["Verdict", "verdict", "expected", "fresh_points", "student_parameters", "SOLUTIONS"]
 
 ROOT = Path(__file__).resolve().parents[1]
 SOLUTIONS = ROOT / "tools" / "solutions"
@@ -74,13 +75,26 @@ def _readable(spec):
     return set(spec.allowed or ()) | set(spec.domain) | set(E.base_symbols(spec))
 
 
+def student_parameters(name, student):
+    """``(index, parameters)`` of exercise ``name``'s variant for ``student``, derived here
+    from the id the grader is given (never read from the notebook); ``(0, None)`` without
+    variants."""
+    ex = EXERCISES[name]
+    if ex.variants is None:
+        return 0, None
+    return variant_of(ex.variants, "" if student is None else student)
+
+
 @cache
-def expected(name):
-    """The reference answer of exercise ``name`` as the checker reads it: the sorted letters
-    of a choice, or ``(form, M)``."""
+def expected(name, index=0):
+    """The reference answer of exercise ``name`` (of its variant ``index``) as the checker
+    reads it: the sorted letters of a choice, or ``(form, M)``."""
     ex = EXERCISES[name]
     ns = {}
     exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)  # the instructor's own code
+    if ex.variants is not None:
+        rows = table()["keys"].get(ex.variants.key) or [ex.variants.default]
+        ns["P"] = rows[index]
     exec(_solution_code(ex.chapter)[name], ns)
     return _read(ex, ns[ex.answer_variable])
 
@@ -175,7 +189,7 @@ def _same_numbers(got, want):
     return a.shape == b.shape and np.linalg.norm(a - b) <= 4 * TOL * max(1.0, np.linalg.norm(b))
 
 
-def _judge(ex, data):
+def _judge(ex, data, index):
     kind = data.get("kind")
     if kind == "none":
         return Verdict("no answer", "no answer recorded")
@@ -185,10 +199,10 @@ def _judge(ex, data):
         return Verdict("forged", "a record of an unknown kind")
     if kind == "choice":
         got = read_choice(data.get("answer"), ex.answer.letters)
-        same = got == expected(ex.name)
+        same = got == expected(ex.name, index)
         return Verdict("correct", "correct") if same else Verdict("wrong", "wrong answer")
     got = _read(ex, parse(data.get("answer")))
-    want = expected(ex.name)
+    want = expected(ex.name, index)
     if isinstance(ex.answer, Value):
         same = _same_numbers(got, want)
         return Verdict("correct", "correct") if same else Verdict("wrong", "wrong answer")
@@ -222,11 +236,14 @@ def _deadline(seconds):
         signal.signal(signal.SIGALRM, old)
 
 
-def verdict(name, data):
-    """The grader's :class:`Verdict` on the record ``data`` (a dict) of exercise ``name``.
+def verdict(name, data, student=None):
+    """The grader's :class:`Verdict` on the record ``data`` (a dict) of exercise ``name``,
+    handed in by ``student`` (the nbgrader student id; None or "": the default numbers).
 
-    A record of another exercise, of an unknown layout, or that the whitelist refuses is not
-    correct; nothing of the record is ever evaluated as code.
+    An exercise with variants is re-checked against that student's own parameters: an answer
+    to another student's numbers is wrong. A record of another exercise, of an unknown
+    layout, or that the whitelist refuses is not correct; nothing of the record is ever
+    evaluated as code.
     """
     if name not in EXERCISES:
         return Verdict("unknown", f"no exercise called {name!r}")
@@ -236,7 +253,12 @@ def verdict(name, data):
         return Verdict("forged", "the record is of another exercise")
     try:
         with _deadline(SECONDS), np.errstate(all="ignore"):
-            return _judge(EXERCISES[name], data)
+            index, _ = student_parameters(name, student)
+            result = _judge(EXERCISES[name], data, index)
+            if index and result.status == "wrong":
+                note = f"{result.note}, for this student's numbers (variant {index})"
+                return Verdict("wrong", note)
+            return result
     except Unreadable as err:
         return Verdict("forged", str(err))
     except Rejected as err:

@@ -16,7 +16,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-from course_lib.exercises import exercises  # noqa: E402
+from course_lib.exercises import exercises, variant  # noqa: E402
 from tools import sync_exercises as sync  # noqa: E402
 
 CHAPTERS = [1, 2, 3, 4, 5]
@@ -41,8 +41,8 @@ def test_committed_problem_set_is_what_the_bank_writes(chapter):
     again = sync.sync_problem_set(copy.deepcopy(nb), chapter, path)
     assert _writes(again) == _writes(nb)  # idempotent, up to date
     sources = [c.source for c in nb.cells]
-    for ex in exercises(chapter):
-        assert ex.markdown() in sources
+    for ex in exercises(chapter):  # an exercise with variants: its default numbers filled in
+        assert variant(ex.name, student="")[0].markdown() in sources
 
 
 @pytest.mark.parametrize("chapter", CHAPTERS)
@@ -82,6 +82,8 @@ def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chap
         answer, cell = by_id[f"{ex.name}-answer"]
         assert answer["solution"] and not answer["grade"] and not answer["locked"]
         lines = cell.source.split("\n")
+        if ex.variants is not None:  # the student's numbers first, read by the solution
+            assert lines.pop(0).startswith(f'P = parameters("{ex.name}")  # your numbers: ')
         assert lines[0] == f"{ex.answer_variable} = None"
         assert lines[1] == "### BEGIN SOLUTION" and lines[-1] == "### END SOLUTION"
     for cell in nb.cells:

@@ -30,6 +30,8 @@ def _namespace(name):
     sols, _ = solutions(ex.chapter)
     ns = {}
     exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
+    if ex.variants is not None:  # the answer cell's P = parameters(name): the default numbers
+        ns["P"] = ex.variants.default
     exec(sols[name], ns)
     return ns
 

@@ -22,6 +22,7 @@ import argparse
 import importlib.util
 import json
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -41,8 +42,10 @@ from course_lib.exercises._transforms import (  # noqa: E402
     NUMBER_OPS,
     PERMUTATIONS,
 )
+from course_lib.exercises._variants import TABLE_FILE, variant_name  # noqa: E402
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / "fingerprints.json"
+TABLES = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 
 
 def solutions(chapter):
@@ -54,10 +57,13 @@ def solutions(chapter):
     return module.SOLUTIONS, module.MISTAKES
 
 
-def run(ex, code):
-    """Namespace after the chapter's set-up cell and the solution code."""
+def run(ex, code, params=None):
+    """Namespace after the chapter's set-up cell and the solution code; ``params``: a variant's
+    parameters, the ``P`` the answer cell of an exercise with variants sets."""
     ns = {}
     exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
+    if ex.variants is not None:
+        ns["P"] = ex.variants.default if params is None else params
     exec(code, ns)
     return ns
 
@@ -185,9 +191,10 @@ def expr_fingerprint(ex, answer, mistakes):
 FINGERPRINTS = {Value: value_fingerprint, Choice: choice_fingerprint, Expr: expr_fingerprint}
 
 
-def fingerprint(ex, code, mistakes):
-    """The stored record of one exercise."""
-    ns = run(ex, code)
+def fingerprint(ex, code, mistakes, params=None):
+    """The stored record of one exercise (of one variant's ``params``: ``ex`` named after the
+    variant, :func:`course_lib.exercises._variants.variant_name`)."""
+    ns = run(ex, code, params)
     wrong = {}
     for mid, expr in mistakes.items():
         if mid not in ex.mistakes:
@@ -195,7 +202,8 @@ def fingerprint(ex, code, mistakes):
         wrong[mid] = eval(expr, ns)
     if set(ex.mistakes) - set(mistakes):
         raise ValueError(f"{ex.name}: hints without a mistake: {set(ex.mistakes) - set(mistakes)}")
-    return FINGERPRINTS[type(ex.answer)](ex, ns[ex.answer_variable], wrong)
+    answer = ns[f"answer_{ex.name.split('@')[0]}"]  # a variant's answer cell is the exercise's
+    return FINGERPRINTS[type(ex.answer)](ex, answer, wrong)
 
 
 def build():
@@ -206,8 +214,23 @@ def build():
         for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
             if ex.name not in sols:
                 raise ValueError(f"{ex.name}: no reference solution in tools/solutions")
-            out[ex.name] = fingerprint(ex, sols[ex.name], mistakes.get(ex.name, {}))
+            wrong = mistakes.get(ex.name, {})
+            out[ex.name] = fingerprint(ex, sols[ex.name], wrong)
+            for k, params in enumerate(variant_rows(ex)[1:], start=1):
+                named = replace(ex, name=variant_name(ex.name, k))
+                out[named.name] = fingerprint(named, sols[ex.name], wrong, params)
     return out
+
+
+def variant_rows(ex):
+    """The rows of the variant table of ``ex`` (``[]`` without variants), read from the file
+    ``tools/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
+    if ex.variants is None:
+        return []
+    rows = json.loads(TABLES.read_text())["keys"].get(ex.variants.key) if TABLES.exists() else None
+    if not rows or rows[0] != ex.variants.default:
+        raise ValueError(f"{ex.name}: no variant table or a stale one: run tools/variant_tables.py")
+    return rows
 
 
 def dumps(data):

@@ -39,7 +39,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from course_lib import exercise_bank  # noqa: E402
-from course_lib.exercises import exercises  # noqa: E402
+from course_lib.exercises import exercises, variant  # noqa: E402
 from course_lib.student import nbgrader_metadata  # noqa: E402
 from tools.exercise_fingerprints import solutions  # noqa: E402
 
@@ -118,9 +118,20 @@ def pointer_source(chapter):
     )
 
 
+def _numbers_line(ex):
+    """The answer cell's first line for an exercise with variants: the student's numbers."""
+    line = f'P = parameters("{ex.name}")  # your numbers: '
+    names = ", ".join(f'P["{p}"]' for p in ex.variants.default)
+    if len(line + names) > 100:
+        names = f'P["{next(iter(ex.variants.default))}"] ... (named as in the statement)'
+    return line + names
+
+
 def _solution_source(ex, code):
+    numbers = [] if ex.variants is None else [_numbers_line(ex)]
     return "\n".join(
         [
+            *numbers,
             f"{ex.answer_variable} = None",
             MARK.strip() + " BEGIN SOLUTION",
             code.rstrip(),
@@ -156,7 +167,7 @@ def problem_set_cells(chapter):
             (
                 "markdown",
                 f"{ex.name}-statement",
-                ex.markdown(),
+                variant(ex.name, student="")[0].markdown(),  # the default numbers
                 nbgrader_metadata(f"{ex.name}-statement", locked=True),
             ),
             (

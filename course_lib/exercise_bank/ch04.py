@@ -1,16 +1,23 @@
 r"""Exercises of chapter 4 (working with rotations: composition, axis and angle, logarithm)."""
 
-from course_lib.exercises._model import Exercise, Expr, Value
+from course_lib.exercises._model import Exercise, Expr, Value, Variants
 from course_lib.symbolic import alpha, beta
 
 CHAPTER = 4
 SETUP = (
-    "import numpy as np\nimport sympy as sp\n\nfrom course_lib.exercises import alpha, beta, check"
+    "import numpy as np\nimport sympy as sp\n\n"
+    "from course_lib.exercises import alpha, beta, check, parameters"
 )
 
-_FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = (0, 0, -1)$, $y_{ab} = (0, 1, 0)$,
-$z_{ab} = (1, 0, 0)$; frame $C$'s axes, written in $B$, are $x_{bc} = (0, 0, 1)$,
-$y_{bc} = (1, 0, 0)$, $z_{bc} = (0, 1, 0)$."""
+_FRAMES = r"""Frame $B$'s axes, written in $A$, are $x_{ab} = <<x_ab>>$, $y_{ab} = <<y_ab>>$,
+$z_{ab} = <<z_ab>>$; frame $C$'s axes, written in $B$, are $x_{bc} = <<x_bc>>$,
+$y_{bc} = <<y_bc>>$, $z_{bc} = <<z_bc>>$."""
+#: The numbers of exercises 4.1 and 4.2, which share them (variant 0: the course's own).
+_FRAMES_VARIANTS = Variants(
+    "ch04_frames",
+    {"x_ab": [0, 0, -1], "y_ab": [0, 1, 0], "z_ab": [1, 0, 0], "x_bc": [0, 0, 1],
+     "y_bc": [1, 0, 0], "z_bc": [0, 1, 0], "v_c": [1, 2, 3]},
+)  # fmt: skip
 
 EXERCISES = [
     Exercise(
@@ -31,6 +38,7 @@ Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
             "rows": "the axes of a frame are the columns of its rotation matrix, not its "
             "rows: R_ab = [x_ab y_ab z_ab].",
         },
+        variants=_FRAMES_VARIANTS,
     ),
     Exercise(
         name="chain_vector",
@@ -39,7 +47,7 @@ Find $R_{ac}$, the axes of $C$ written in $A$. Give a 3x3 array or matrix.
         level="warm-up",
         title="A vector through a chain of frames",
         statement=r"""With the frames of exercise 4.1, a vector has the coordinates
-$v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
+$v_c = <<v_c>>$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
         tip="v_b = R_bc v_c, then v_a = R_ab v_b.",
@@ -50,6 +58,7 @@ $v_c = (1, 2, 3)$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
             "rows": "the axes of a frame are the columns of its rotation matrix, not its "
             "rows: R_bc = [x_bc y_bc z_bc].",
         },
+        variants=_FRAMES_VARIANTS,
     ),
     Exercise(
         name="angle_from_trace",

@@ -46,6 +46,7 @@ from __future__ import annotations
 
 import json
 import warnings
+from dataclasses import replace
 from functools import lru_cache
 from importlib import resources
 
@@ -78,9 +79,17 @@ from ..symbolic import (
     z,
 )
 from ._check import expected_shape_phrase, judge
-from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants
+from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants, format_parameter
 from ._reading import Rejected
-from ._variants import identity_line, set_student_id, student_id, variant_index
+from ._variants import (
+    identity_line,
+    set_student_id,
+    student_id,
+    variant_index,
+    variant_name,
+    variant_of,
+    variants_enabled,
+)
 
 __all__ = [
     "EXERCISES",
@@ -98,8 +107,11 @@ __all__ = [
     "names",
     "parameters",
     "set_student_id",
+    "show",
     "student_id",
+    "variant",
     "variant_index",
+    "variants_enabled",
     "A",
     "B",
     "R",
@@ -175,8 +187,11 @@ def exercises(chapter=None):
     return [ex for ex in _registry().values() if ex.chapter == chapter]
 
 
-def parameters(name):
-    """The parameters of exercise ``name`` in the current student's variant (a copy).
+def parameters(name, student=None):
+    """The parameters of exercise ``name`` in a student's variant (a copy).
+
+    ``student`` is an id, or None for this kernel's student (:func:`student_id`); with no id,
+    or variants off, the default numbers.
 
     Raises
     ------
@@ -187,6 +202,8 @@ def parameters(name):
 
     Examples
     --------
+    >>> parameters("chain_vector", student="")["v_c"]
+    [1, 2, 3]
     >>> parameters("hat_fifth")
     Traceback (most recent call last):
     ...
@@ -195,7 +212,37 @@ def parameters(name):
     ex = get(name)
     if ex.variants is None:
         raise ValueError(f"exercise {name} has no variants: its numbers are in its statement")
-    return json.loads(json.dumps(ex.variants.default))
+    return variant_of(ex.variants, student)[1]
+
+
+def variant(name, student=None):
+    """Exercise ``name`` as ``student`` gets it (None: this kernel's student), and its index.
+
+    Its statement, tip and hints show that variant's numbers, and its ``name`` is the one its
+    fingerprints are stored under (:func:`~course_lib.exercises._variants.variant_name`). An
+    exercise without variants is returned as it is, with index 0.
+
+    Examples
+    --------
+    >>> ex, k = variant("chain_vector", student="")
+    >>> k, "<<v_c>>" in ex.statement, "v_c = (1," in ex.statement
+    (0, False, True)
+    """
+    ex = get(name)
+    if ex.variants is None:
+        return ex, 0
+    k, values = variant_of(ex.variants, student)
+    shown = {p: format_parameter(values[p]) for p in ex.placeholders()}
+    return replace(ex.filled(shown), name=variant_name(name, k)), k
+
+
+def show(name):
+    """The statement of exercise ``name`` with this student's numbers, as notebook markdown,
+    under a line saying whose numbers they are (or how to set the student id)."""
+    from IPython.display import Markdown
+
+    ex, _ = variant(name)
+    return Markdown(f"{ex.statement.strip()}\n\n*{identity_line()}*")
 
 
 @lru_cache(maxsize=1)
@@ -232,16 +279,16 @@ def check(name, answer):
     >>> print(check("which_are_rigid", "a"))  # doctest: +ELLIPSIS
     ✗ which_are_rigid: that is not the right set of letters. Hint: ...
     """
-    ex = get(name)
+    ex, _ = variant(name)
     try:
-        fp = _fingerprints()[name]
+        fp = _fingerprints()[ex.name]
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore")
             status, text = judge(ex, fp, answer)
     except Rejected as err:
         status, text = err.status, str(err)
         if status == "no answer":
-            text = f"no answer yet: assign your answer to `{ex.answer_variable}`."
+            text = f"no answer yet: assign your answer to `answer_{name}`."
     except KeyError:
         status, text = (
             "malformed",

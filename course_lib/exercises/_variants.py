@@ -27,14 +27,23 @@ True
 
 from __future__ import annotations
 
+import copy
 import hashlib
+import json
 import os
 import unicodedata
+from functools import lru_cache
+from importlib import resources
 
 __all__ = [
     "ENV_ID",
     "HUB_ID",
+    "TABLE_FILE",
     "identity_line",
+    "table",
+    "variant_name",
+    "variant_of",
+    "variants_enabled",
     "normalise_id",
     "set_student_id",
     "student_id",
@@ -138,3 +147,53 @@ def identity_line():
         f'set_student_id("your id")` in a new cell (or set the environment variable {ENV_ID}), '
         "then run all cells again; on the course's JupyterHub your user name is used."
     )
+
+
+# --------------------------------------------------------------------------- the variant tables
+
+#: The vetted variants of every variant key, package data of :mod:`course_lib.exercise_bank`,
+#: written by ``tools/variant_tables.py``: ``{"enabled": bool, "keys": {key: [parameters, ...]}}``
+#: with row 0 of each key the exercise's default. Parameters only: no answer, no value of one.
+TABLE_FILE = "variants.json"
+
+
+@lru_cache(maxsize=1)
+def table():
+    """The variant tables (read once); ``{"enabled": False, "keys": {}}`` when there are none."""
+    from .. import exercise_bank
+
+    path = resources.files(exercise_bank).joinpath(TABLE_FILE)
+    if not path.is_file():
+        return {"enabled": False, "keys": {}}
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def variants_enabled():
+    """Whether this course gives each student their own numbers (the tables' ``enabled``; the
+    instructor turns it off with ``python tools/variant_tables.py --off``)."""
+    return bool(table().get("enabled"))
+
+
+def variant_of(variants, student=None):
+    """``(index, parameters)`` of an exercise's :class:`Variants` for ``student``.
+
+    ``student`` is an id, or None for this kernel's :func:`student_id`. With variants off, no
+    table for the key, or no id, it is ``(0, default)``. The parameters are a copy.
+    """
+    rows = table()["keys"].get(variants.key) if variants_enabled() else None
+    if not rows:
+        return 0, copy.deepcopy(variants.default)
+    k = variant_index(variants.key, len(rows), student)
+    return k, copy.deepcopy(rows[k])
+
+
+def variant_name(name, index):
+    """The name an exercise's variant is fingerprinted under: ``name`` for the default
+    (index 0), ``name@index`` otherwise.
+
+    Examples
+    --------
+    >>> variant_name("compose_frames", 0), variant_name("compose_frames", 7)
+    ('compose_frames', 'compose_frames@7')
+    """
+    return name if index == 0 else f"{name}@{index}"

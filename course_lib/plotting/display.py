@@ -102,8 +102,8 @@ def show(alt, fig=None):
     Parameters
     ----------
     alt : str
-        What the figure shows and what to see in it (the chapters use the first sentence of
-        the caption under the figure: the website's alt text for it).
+        What the figure shows and what to see in it (the chapters use the caption under the
+        figure as plain text, ``tools/alt_text.py``: the website's alt text for it).
     fig : matplotlib.figure.Figure, optional
         Default: pyplot's current figure (there must be one).
 
@@ -113,8 +113,8 @@ def show(alt, fig=None):
     >>> fig = plt.figure(figsize=(1, 1), dpi=20)
     >>> show("An empty square canvas.")  # doctest: +ELLIPSIS
     {'text/html': '<img class="course-figure" alt="An empty square canvas." src=...}
-    >>> plt.get_fignums()
-    []
+    >>> plt.fignum_exists(fig.number)  # closed: the inline backend does not show it again
+    False
     """
     import matplotlib.pyplot as plt
     from IPython.display import display

@@ -1,14 +1,18 @@
-"""Reference solutions of chapter 4 (instructor side; not part of the installed package)."""
+"""Reference solutions of chapter 4 (instructor side; not part of the installed package).
+
+An exercise with variants reads its numbers from ``P``, the student's parameters: the answer
+cell sets ``P = parameters(name)`` before the solution, and the tools set ``P`` to each variant.
+"""
 
 SOLUTIONS = {
     "compose_frames": """\
-R_ab = np.column_stack([[0, 0, -1], [0, 1, 0], [1, 0, 0]])
-R_bc = np.column_stack([[0, 0, 1], [1, 0, 0], [0, 1, 0]])
+R_ab = np.column_stack([P["x_ab"], P["y_ab"], P["z_ab"]])
+R_bc = np.column_stack([P["x_bc"], P["y_bc"], P["z_bc"]])
 answer_compose_frames = R_ab @ R_bc""",
     "chain_vector": """\
-R_ab = np.column_stack([[0, 0, -1], [0, 1, 0], [1, 0, 0]])
-R_bc = np.column_stack([[0, 0, 1], [1, 0, 0], [0, 1, 0]])
-v_c = np.array([1, 2, 3])
+R_ab = np.column_stack([P["x_ab"], P["y_ab"], P["z_ab"]])
+R_bc = np.column_stack([P["x_bc"], P["y_bc"], P["z_bc"]])
+v_c = np.array(P["v_c"])
 answer_chain_vector = R_ab @ (R_bc @ v_c)""",
     "angle_from_trace": """\
 trace = sp.Rational(6, 10) + sp.Rational(1, 10) - sp.Rational(2, 10)  # only the diagonal

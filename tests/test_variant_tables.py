@@ -1,0 +1,164 @@
+"""Per-student variants (issue 27): the tables, the draws, the checker and the grader on them.
+
+The course ships its tables off (``"enabled": false``) until every problem set shows each
+student's numbers; these tests turn them on (:func:`variants_on`) and run the real checker and
+the real grader on every row of every table.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+
+import variant_draws  # noqa: E402
+import variant_tables  # noqa: E402
+
+from course_lib.exercises import EXERCISES, check, parameters, set_student_id  # noqa: E402
+from course_lib.exercises import _variants as V  # noqa: E402
+from course_lib.record import answer_record  # noqa: E402
+from grader import verify  # noqa: E402
+from tools.exercise_fingerprints import run, solutions  # noqa: E402
+
+VARIED = [ex for ex in EXERCISES.values() if ex.variants is not None]
+KEYS = sorted({ex.variants.key for ex in VARIED})
+SEEDS = 1000
+
+
+@pytest.fixture(autouse=True)
+def _no_ambient_id(monkeypatch):
+    monkeypatch.delenv(V.ENV_ID, raising=False)
+    monkeypatch.delenv(V.HUB_ID, raising=False)
+    set_student_id(None)
+    yield
+    set_student_id(None)
+
+
+@pytest.fixture
+def variants_on(monkeypatch):
+    """The course's own tables with variants turned on (as ``variant_tables.py --on``)."""
+    on = {**V.table(), "enabled": True}
+    monkeypatch.setattr(V, "table", lambda: on)
+    monkeypatch.setattr(verify, "table", lambda: on)
+    verify.expected.cache_clear()
+    yield on
+    verify.expected.cache_clear()
+
+
+def _student_of(key, index, count=variant_tables.COUNT):
+    """A student id whose variant of ``key`` is ``index``."""
+    return next(f"s{i}" for i in range(100_000) if V.variant_index(key, count, f"s{i}") == index)
+
+
+def _answers(ex, params):
+    """The reference answer and each known mistake of ``ex`` for the parameters ``params``."""
+    sols, mistakes = solutions(ex.chapter)
+    ns = run(ex, sols[ex.name], params)
+    wrong = {mid: eval(expr, ns) for mid, expr in mistakes.get(ex.name, {}).items()}
+    return ns[ex.answer_variable], wrong
+
+
+def test_the_tables_are_what_the_tool_writes_and_row_0_is_the_default():
+    assert variant_tables.main(["--check"]) == 0
+    data = json.loads(variant_tables.TARGET.read_text())
+    assert set(data["keys"]) == set(KEYS)
+    for ex in VARIED:
+        rows = data["keys"][ex.variants.key]
+        assert len(rows) == variant_tables.COUNT and rows[0] == ex.variants.default
+        assert len({json.dumps(r, sort_keys=True) for r in rows}) == len(rows)  # all different
+
+
+@pytest.mark.parametrize("key", KEYS)
+def test_every_row_of_the_table_is_fit(key):
+    for row in V.table()["keys"][key]:
+        assert variant_draws.problems(key, row) == []
+
+
+@pytest.mark.parametrize("ex", VARIED, ids=lambda ex: ex.name)
+def test_1000_seeds_draw_fit_numbers_whose_mistakes_all_differ_from_the_answer(ex):
+    """Property over 1,000 seeds: each draw is fit (no degenerate case), the solution runs on
+    it, and every known mistake gives a value other than the answer and other than each other
+    mistake's, so each one can get its own hint."""
+    key = ex.variants.key
+    for seed in range(SEEDS):
+        params = variant_draws.draw(key, [variant_tables.key_seed(key), 10_000 + seed])
+        assert variant_draws.problems(key, params) == []
+        right, wrong = _answers(ex, params)
+        values = [np.asarray(right, dtype=float)] + [np.asarray(w, float) for w in wrong.values()]
+        for i, a in enumerate(values):
+            for b in values[i + 1 :]:
+                assert np.abs(a - b).max() > 0.5, (seed, params)
+
+
+@pytest.mark.parametrize("ex", VARIED, ids=lambda ex: ex.name)
+def test_on_every_row_the_solution_passes_and_each_mistake_gets_its_hint(ex, variants_on):
+    rows = variants_on["keys"][ex.variants.key]
+    for k, params in enumerate(rows):
+        set_student_id(_student_of(ex.variants.key, k))
+        assert parameters(ex.name) == params
+        right, wrong = _answers(ex, params)
+        assert check(ex.name, right).ok, (k, params)
+        for mid, answer in wrong.items():
+            result = check(ex.name, answer)
+            assert not result.ok and ex.mistakes[mid].split(":")[0] in result.message, (k, mid)
+
+
+def test_the_statement_shows_the_students_numbers(variants_on):
+    from course_lib.exercises import variant
+
+    key = "ch04_frames"
+    sid = _student_of(key, 5)
+    ex, k = variant("chain_vector", student=sid)
+    v_c = variants_on["keys"][key][5]["v_c"]
+    assert k == 5 and ex.name == "chain_vector@5"
+    assert "v_c = (" + ",\\ ".join(map(str, v_c)) + ")" in ex.statement
+
+
+def test_another_students_answer_is_wrong_and_a_swap_gives_both_zero(variants_on):
+    """Two students with different numbers hand in each other's answers: the grader, which
+    derives each one's numbers from the id it is given, marks both wrong, with a note."""
+    key = "ch04_frames"
+    ada, bob = _student_of(key, 3), _student_of(key, 17)
+    for ex in VARIED:
+        mine = {s: _answers(ex, parameters(ex.name, student=s))[0] for s in (ada, bob)}
+        for student, other in ((ada, bob), (bob, ada)):
+            own = verify.verdict(ex.name, answer_record(ex.name, mine[student]), student)
+            swapped = verify.verdict(ex.name, answer_record(ex.name, mine[other]), student)
+            assert own.ok, own
+            assert swapped.status == "wrong" and "this student's numbers" in swapped.note
+
+
+def test_with_variants_off_everyone_gets_the_default_and_the_grader_agrees():
+    assert not V.variants_enabled()  # as the course ships today
+    for ex in VARIED:
+        assert parameters(ex.name, student="ada") == ex.variants.default
+        right, _ = _answers(ex, ex.variants.default)
+        assert verify.verdict(ex.name, answer_record(ex.name, right), "ada").ok
+
+
+@pytest.mark.parametrize("raw", ["", " ", "é" * 3, "學生 七", "x" * 1000, "a b", "🙂", None])
+def test_a_strange_student_id_gets_a_valid_stable_variant(raw, variants_on):
+    ex = VARIED[0]
+    first = parameters(ex.name, student=raw)
+    assert first in variants_on["keys"][ex.variants.key]
+    assert parameters(ex.name, student=raw) == first
+
+
+def test_the_instructor_sees_a_students_numbers_and_answers(variants_on):
+    import show_variant
+
+    key = "ch04_frames"
+    sid = _student_of(key, 9)
+    text = "\n".join(show_variant.report(sid, 4))
+    row = variants_on["keys"][key][9]
+    assert "variants on" in text and text.count(f"[variant 9 of key {key}]") == 2
+    assert "v_c = (" + ",\\ ".join(map(str, row["v_c"])) + ")" in text
+    R_ab = np.column_stack([row["x_ab"], row["y_ab"], row["z_ab"]])
+    R_bc = np.column_stack([row["x_bc"], row["y_bc"], row["z_bc"]])
+    assert np.array2string((R_ab @ R_bc @ row["v_c"]).astype(float)) in text

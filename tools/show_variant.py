@@ -1,0 +1,62 @@
+"""What one student's problem set asks and its answers (instructor side: it runs the solutions).
+
+    python tools/show_variant.py STUDENT psNN     # make variant STUDENT=id PS=psNN
+
+For each exercise of the problem set with variants: the variant the student gets (the same id
+the grader is given: the nbgrader student id, the JupyterHub user or the handed-out code), the
+statement with that student's numbers, and the reference answer for them. With variants off
+(``tools/variant_tables.py --off``) every student gets variant 0 and it says so.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+for path in (ROOT, ROOT / "tools"):
+    if str(path) not in sys.path:
+        sys.path.insert(0, str(path))
+
+from course_lib.exercises import exercises, variant, variants_enabled  # noqa: E402
+from course_lib.exercises._variants import normalise_id  # noqa: E402
+from grader.verify import expected  # noqa: E402
+
+
+def report(student, chapter):
+    """The lines of the report for ``student`` and the problem set of ``chapter``."""
+    state = "on" if variants_enabled() else "off (everyone gets variant 0)"
+    lines = [f"student {normalise_id(student)!r}, problem set {chapter}; variants {state}"]
+    varied = [ex for ex in exercises(chapter) if ex.variants is not None]
+    if not varied:
+        lines.append("no exercise of this problem set has variants")
+    for ex in varied:
+        shown, k = variant(ex.name, student=student)
+        _, M = expected(ex.name, k)  # a numeric answer (exercises with variants are numeric)
+        answer = np.array(M.tolist(), dtype=float).reshape(ex.answer.shape)
+        lines += ["", f"## {ex.heading()}  [variant {k} of key {ex.variants.key}]",
+                  shown.statement.strip(), f"answer: {np.array2string(answer)}"]  # fmt: skip
+    return lines
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("student", help="the student id (as nbgrader knows it)")
+    parser.add_argument("ps", help="the problem set: ps01 ... ps05 (or 1 ... 5)")
+    args = parser.parse_args(argv)
+    m = re.fullmatch(r"(?:ps)?0*([1-9][0-9]*)", args.ps.strip())
+    if not m:
+        parser.error(f"PS must name a problem set as ps01 ... ps05, got {args.ps!r}")
+    try:
+        print("\n".join(report(args.student, int(m.group(1)))))
+    except ValueError as err:
+        parser.error(str(err))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -173,8 +173,9 @@ test-gradescope: $(STAMP)
 # grading through real nbgrader and the Gradescope autograder in a temporary /autograder.
 .PHONY: test-slow
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q -m "slow_grading or gradescope" \
-		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q \
+		-m "slow_grading or gradescope or slow_variants" \
+		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every

@@ -8,6 +8,9 @@
   skipped and the run ends with one line per tool: how many were skipped, why, and the command
   that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run`` sets all three)
   a missing tool fails those tests instead.
+- The tests run as no student: the exercises' numbers depend on the student id
+  (``course_lib/exercises/_variants.py``), and a JupyterHub sets ``JUPYTERHUB_USER`` in every
+  server, so both id variables are removed before any test or notebook kernel starts.
 """
 
 from __future__ import annotations
@@ -19,6 +22,8 @@ from functools import cache
 
 import pytest
 
+for _id in ("COURSE_STUDENT_ID", "JUPYTERHUB_USER"):
+    os.environ.pop(_id, None)
 
 @dataclass(frozen=True)
 class Tool:

@@ -128,6 +128,9 @@ class ConfinedExecute(Execute):
         # messages, a flood of 1 MB writes held up to 1 GB in the grader (483 MB for a 6 s flood
         # on a loaded machine). Past IOPUB_QUEUE waiting messages the socket drops them.
         km.context.setsockopt(zmq.RCVHWM, IOPUB_QUEUE)
+        # the student of the submission, from nbgrader (never from the notebook): the kernel's
+        # checks then judge that student's own exercise variants, as VerifyRecords does
+        km.student = (self.resources or {}).get("nbgrader", {}).get("student") or ""
         return km
 
     def _start_cell(self, index):

@@ -95,9 +95,11 @@ BOOT = (
 )
 
 
-def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH):
-    """The kernel's whole environment (``work``: its working directory and ``HOME``)."""
-    return {
+def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
+    """The kernel's whole environment (``work``: its working directory and ``HOME``;
+    ``student``: the nbgrader student id, as ``COURSE_STUDENT_ID``, so that the submission's
+    own checks use that student's exercise variants, as the grader does)."""
+    env = {
         "PATH": f"{prefix}/bin:/usr/bin:/bin",
         "LANG": "C.UTF-8",
         "HOME": work,
@@ -108,6 +110,9 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH):
         "JUPYTER_RUNTIME_DIR": f"{work}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
     }
+    if student:
+        env["COURSE_STUDENT_ID"] = student
+    return env
 
 
 @cache
@@ -149,7 +154,7 @@ def _system():
     return out
 
 
-def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
+def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=(), student=""):
     """The ``bwrap`` argv that starts ipykernel confined (see the module's docstring).
 
     ``expose``: folders mounted read-only; ``scratch``: the kernel's own folder (connection
@@ -167,7 +172,7 @@ def bwrap_command(expose, scratch, kernel_args, python=sys.executable, path=()):
         cmd += ["--ro-bind", folder, folder]
     cmd += ["--bind", str(scratch), str(scratch), "--dir", SCRATCH, "--chdir", SCRATCH]
     cmd += ["--remount-ro", "/"]
-    for key, value in kernel_env(path).items():
+    for key, value in kernel_env(path, student=student).items():
         cmd += ["--setenv", key, value]
     return cmd + ["--", python, "-P", "-c", BOOT, *kernel_args]
 
@@ -184,13 +189,13 @@ def _limit(unconfined=False):
             print(f"grader.sandbox: {name} not set here: {exc}", file=sys.stderr)
 
 
-def _exec_unconfined(scratch, kernel, python, path):
+def _exec_unconfined(scratch, kernel, python, path, student=""):
     """The kernel without bubblewrap (the instructor opted in): it runs as the instructor."""
     work = os.path.join(scratch, "work")
     os.makedirs(work, exist_ok=True)
     os.chdir(work)
     _limit(unconfined=True)
-    env = kernel_env(path, work=work)
+    env = kernel_env(path, work=work, student=student)
     os.execve(python, [python, "-P", "-c", BOOT, *kernel], env)
 
 
@@ -202,18 +207,21 @@ def main(argv=None):
     parser.add_argument("--python", default=sys.executable)
     parser.add_argument("--pythonpath", action="append", default=[])
     parser.add_argument("--unconfined", action="store_true", help="no bubblewrap (opted in)")
+    parser.add_argument("--student-id", default="", help="nbgrader's student id of the work")
     parser.add_argument("kernel", nargs=argparse.REMAINDER)
     args = parser.parse_args(argv)
     kernel = args.kernel[1:] if args.kernel[:1] == ["--"] else args.kernel
     quiet = os.open(os.devnull, os.O_WRONLY)  # ipykernel's banner; errors still go to stderr
     if args.unconfined:
         os.dup2(quiet, 1)
-        _exec_unconfined(args.scratch, kernel, args.python, args.pythonpath)
+        _exec_unconfined(args.scratch, kernel, args.python, args.pythonpath, args.student_id)
     if shutil.which("bwrap") is None:
         print(f"grader.sandbox: bwrap not found: {INSTALL}", file=sys.stderr)
         return 2
     os.dup2(quiet, 1)
-    cmd = bwrap_command(args.expose, args.scratch, kernel, args.python, args.pythonpath)
+    cmd = bwrap_command(
+        args.expose, args.scratch, kernel, args.python, args.pythonpath, args.student_id
+    )
     _limit()
     # bwrap is the sandbox's PID 1: its environment must hold nothing of the grader's either
     os.execve(cmd[0], cmd, {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8"})
@@ -245,6 +253,9 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
             "and change whatever you can (the solutions, the gradebook). Only for a machine "
             "without bubblewrap, and work you trust (docs/grading.md).",
         ).tag(config=True)
+        #: nbgrader's student id of the submission (set by ConfinedExecute): the kernel's
+        #: ``COURSE_STUDENT_ID``, so the submission's checks use that student's variants.
+        student = Unicode("")
 
         @classmethod
         def unconfined_in(cls, config):
@@ -283,6 +294,7 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
                 lib = Path(course_lib.__file__).resolve().parent
                 argv += [f"--pythonpath={lib.parent}", "--python", sys.executable]
                 argv += [f"--scratch={self.scratch}"] + ["--unconfined"] * self.unconfined
+                argv += [f"--student-id={self.student}"] * bool(self.student)
                 argv += ["--", "-f", "{connection_file}"]
                 self._kernel_spec = KernelSpec(
                     argv=argv,

@@ -39,7 +39,7 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 from course_lib import exercise_bank  # noqa: E402
-from course_lib.exercises import exercises, variant  # noqa: E402
+from course_lib.exercises import exercises  # noqa: E402
 from course_lib.student import nbgrader_metadata  # noqa: E402
 from tools.exercise_fingerprints import solutions  # noqa: E402
 
@@ -118,6 +118,27 @@ def pointer_source(chapter):
     )
 
 
+#: The statement cell of an exercise with variants: its numbers are each student's own.
+OWN_NUMBERS = (
+    "In this exercise every student has their own numbers: the cell below shows the statement "
+    "with yours (run it). In the answer cell, `P` holds them, by the names the statement uses."
+)
+
+
+def _statement(ex):
+    """The markdown of the statement cell (an exercise with variants: the heading, and where
+    the student's own statement is)."""
+    if ex.variants is None:
+        return ex.markdown()
+    heading, *_, assign = ex.markdown().split("\n\n")
+    return "\n\n".join([heading, OWN_NUMBERS, assign])
+
+
+def _numbers_source(ex):
+    """The locked cell that shows the statement with the student's numbers."""
+    return f'from course_lib.exercises import show\n\nshow("{ex.name}")'
+
+
 def _numbers_line(ex):
     """The answer cell's first line for an exercise with variants: the student's numbers."""
     line = f'P = parameters("{ex.name}")  # your numbers: '
@@ -163,13 +184,18 @@ def problem_set_cells(chapter):
     ]
     cells = [(kind, cid, src, nbgrader_metadata(cid, locked=True)) for kind, cid, src in head]
     for ex in exercises(chapter):
-        cells += [
+        cells.append(
             (
                 "markdown",
                 f"{ex.name}-statement",
-                variant(ex.name, student="")[0].markdown(),  # the default numbers
+                _statement(ex),
                 nbgrader_metadata(f"{ex.name}-statement", locked=True),
-            ),
+            )
+        )
+        if ex.variants is not None:
+            cid = f"{ex.name}-numbers"
+            cells.append(("code", cid, _numbers_source(ex), nbgrader_metadata(cid, locked=True)))
+        cells += [
             (
                 "code",
                 f"{ex.name}-answer",
@@ -191,7 +217,7 @@ def problem_set_cells(chapter):
 # ---------------------------------------------------------------------------------------------
 
 _OWNED_ID = re.compile(
-    r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|answer|check))$"
+    r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|numbers|answer|check))$"
 )
 
 

@@ -25,6 +25,7 @@ import pytest
 for _id in ("COURSE_STUDENT_ID", "JUPYTERHUB_USER"):
     os.environ.pop(_id, None)
 
+
 @dataclass(frozen=True)
 class Tool:
     what: str  # the tool, as a person names it

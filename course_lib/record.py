@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .exercises import Choice, Value, get
+from .exercises import Choice, Value, get, variant
 from .exercises._engine import base_symbols
 from .exercises._reading import read_answer, read_choice
 
@@ -57,6 +57,8 @@ def answer_record(name, answer):
     """
     ex = get(name)
     out = {"version": VERSION, "exercise": name, "kind": "none", "answer": None}
+    if ex.variants is not None:  # which numbers the kernel used: a note for the grader, no points
+        out["variant"] = variant(name)[1]
     if answer is None:
         return out
     spec = ex.answer

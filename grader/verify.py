@@ -257,6 +257,10 @@ def verdict(name, data, student=None):
             result = _judge(EXERCISES[name], data, index)
             if index and result.status == "wrong":
                 note = f"{result.note}, for this student's numbers (variant {index})"
+                used = data.get("variant")
+                if type(used) is int and used != index:  # only a note: points never use it
+                    why = " (no student id was set)" if used == 0 else ""
+                    note += f"; the notebook showed the numbers of variant {used}{why}"
                 return Verdict("wrong", note)
             return result
     except Unreadable as err:

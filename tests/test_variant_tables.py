@@ -187,3 +187,15 @@ def test_the_instructor_sees_a_students_numbers_and_answers(variants_on):
     R_ab = np.column_stack([row["x_ab"], row["y_ab"], row["z_ab"]])
     R_bc = np.column_stack([row["x_bc"], row["y_bc"], row["z_bc"]])
     assert np.array2string((R_ab @ R_bc @ row["v_c"]).astype(float)) in text
+
+
+def test_the_grader_notes_when_the_notebook_showed_other_numbers(variants_on):
+    """A student who forgot to set their id worked on the default numbers: 0 points (the
+    numbers are not theirs), and the note says why, for the instructor to see."""
+    ex = VARIED[0]
+    sid = _student_of(ex.variants.key, 4)
+    default = _answers(ex, ex.variants.default)[0]
+    got = verify.verdict(ex.name, answer_record(ex.name, default), sid)  # kernel: no id
+    assert got.status == "wrong" and "no student id was set" in got.note
+    forged = {**answer_record(ex.name, default), "variant": 4}  # the record's claim: no points
+    assert verify.verdict(ex.name, forged, sid).status == "wrong"

@@ -67,8 +67,8 @@ $v_c = <<v_c>>$ in $C$. Find its coordinates $v_a$ in $A$. Give a 3-vector.
         level="warm-up",
         title="The angle of a rotation from its trace",
         statement=r"""
-Of a rotation matrix $R$ only the diagonal entries are known: $R_{11} = 0.6$, $R_{22} = 0.1$,
-$R_{33} = -0.2$. Find its angle $\theta \in [0, \pi]$ from
+Of a rotation matrix $R$ only the diagonal entries are known: $R_{11} = <<R11>>$,
+$R_{22} = <<R22>>$, $R_{33} = <<R33>>$. Find its angle $\theta \in [0, \pi]$ from
 $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
 """,
         answer=Value(shape=(), angle=True),
@@ -77,6 +77,7 @@ $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
             "cosine": "that is cos θ; the exercise asks for θ itself.",
             "no_minus_one": "tr R = 1 + 2 cos θ: subtract the 1 before halving.",
         },
+        variants=Variants("ch04_trace", {"R11": 0.6, "R22": 0.1, "R33": -0.2}),
     ),
     Exercise(
         name="axis_of_rotation",
@@ -106,18 +107,21 @@ Give a 3-vector.
         level="core",
         title="Fixed axes and body axes",
         statement=r"""
-A camera starts aligned with the world frame ($R = I$). It turns by 90° about the world $z$
-axis, then by 90° about its **own** (current) $x$ axis, then by 60° about the **world** $x$
-axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
+A camera starts aligned with the world frame ($R = I$). It turns by <<a1>>° about the world
+$<<axis1>>$ axis, then by <<a2>>° about its **own** (current) $<<axis2>>$ axis, then by <<a3>>°
+about the **world** $<<axis3>>$ axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
 """,
         answer=Value(shape=(3, 3), rotation=True),
         tip="A turn about a world (fixed) axis multiplies from the left, a turn about the "
         "body's own axis from the right.",
         mistakes={
-            "all_body": "the last turn is about the world x axis: it multiplies from the left.",
-            "all_world": "the second turn is about the camera's own x axis: it multiplies from "
+            "all_body": "the last turn is about a world axis: it multiplies from the left.",
+            "all_world": "the second turn is about the camera's own axis: it multiplies from "
             "the right.",
         },
+        variants=Variants(
+            "ch04_camera", {"a1": 90, "axis1": "z", "a2": 90, "axis2": "x", "a3": 60, "axis3": "x"}
+        ),
     ),
     Exercise(
         name="composed_angle",

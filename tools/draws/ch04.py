@@ -56,4 +56,69 @@ def _frames_problems(p):
     return out
 
 
-DRAWS = {"ch04_frames": (_frames, _frames_problems)}
+def _trace(rng):
+    """Three one-decimal diagonal entries (a rotation's: each at least cos θ, sum 1 + 2 cos θ)."""
+    d = rng.integers(-9, 10, size=3) / 10
+    return {"R11": float(d[0]), "R22": float(d[1]), "R33": float(d[2])}
+
+
+def _trace_problems(p):
+    d = np.array([p["R11"], p["R22"], p["R33"]])
+    c = (d.sum() - 1) / 2  # cos θ
+    out = []
+    if not -0.95 <= c <= 0.5:  # θ near 0 or π; above 0.5 tr R/2 > 1 leaves no_minus_one undefined
+        out.append(f"cos θ = {c:.2f} outside [-0.95, 0.5]")
+    weights = (d - c) / (1 - c) if c < 1 else np.zeros(3)  # the axis's squared entries
+    if np.any(weights < 0.02) or np.any(weights > 0.95):
+        out.append("no rotation has these diagonal entries with an axis off the coordinate axes")
+    theta = np.arccos(np.clip(c, -1, 1))
+    values = {"answer": theta, "cosine": c, "no_minus_one": np.arccos(np.clip(d.sum() / 2, -1, 1))}
+    names = list(values)
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            if abs(values[a] - values[b]) < 0.01:
+                out.append(f"angle_from_trace: {a} and {b} are too close")
+    return out
+
+
+_AXES = "xyz"
+_ANGLES = [30, 45, 60, 90, 120, 135, 150]
+
+
+def _turn(degrees, axis):
+    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
+    i, j = [(1, 2), (2, 0), (0, 1)][_AXES.index(axis)]
+    M = np.eye(3)
+    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
+    return M
+
+
+def _camera(rng):
+    """Three turns: about a world axis, the camera's own axis, a world axis."""
+    angles = rng.choice(_ANGLES, size=3)
+    axes = rng.choice(list(_AXES), size=3)
+    out = {}
+    for k in range(3):
+        out[f"a{k + 1}"], out[f"axis{k + 1}"] = int(angles[k]), str(axes[k])
+    return out
+
+
+def _camera_problems(p):
+    R1, R2, R3 = (_turn(p[f"a{k}"], p[f"axis{k}"]) for k in (1, 2, 3))
+    out = []
+    if p["axis1"] == p["axis2"]:
+        out.append("the first two turns share their axis: world and own axis are the same")
+    matrices = {"answer": R3 @ R1 @ R2, "all_body": R1 @ R2 @ R3, "all_world": R3 @ R2 @ R1}
+    names = list(matrices)
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            if np.abs(matrices[a] - matrices[b]).max() < 0.05:
+                out.append(f"fixed_vs_body: {a} and {b} give the same orientation")
+    return out
+
+
+DRAWS = {
+    "ch04_frames": (_frames, _frames_problems),
+    "ch04_trace": (_trace, _trace_problems),
+    "ch04_camera": (_camera, _camera_problems),
+}

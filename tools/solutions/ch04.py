@@ -15,21 +15,26 @@ R_bc = np.column_stack([P["x_bc"], P["y_bc"], P["z_bc"]])
 v_c = np.array(P["v_c"])
 answer_chain_vector = R_ab @ (R_bc @ v_c)""",
     "angle_from_trace": """\
-trace = sp.Rational(6, 10) + sp.Rational(1, 10) - sp.Rational(2, 10)  # only the diagonal
-answer_angle_from_trace = sp.acos((trace - 1) / 2)  # arccos(−1/4)""",
+trace = sum(sp.Rational(str(P[k])) for k in ("R11", "R22", "R33"))  # only the diagonal
+answer_angle_from_trace = sp.acos((trace - 1) / 2)""",
     "axis_of_rotation": """\
 skew = sp.Matrix([[0, -2, 1], [2, 0, -2], [-1, 2, 0]]) / sp.sqrt(3)  # R − Rᵀ
 angle = sp.acos((0 - 1) / sp.Integer(2))  # tr R = 0: θ = 2π/3
 S = skew / (2 * sp.sin(angle))  # = ω̂
 answer_axis_of_rotation = sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])  # (2, 1, 2)/3""",
     "fixed_vs_body": """\
-Rz = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])  # 90° about z
-Rx90 = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]])  # 90° about x
-c, s = np.cos(np.pi / 3), np.sin(np.pi / 3)
-Rx60 = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])  # 60° about x
-R = Rz  # about the world z axis, from R = I
-R = R @ Rx90  # about the camera's own x axis: from the right
-R = Rx60 @ R  # about the world x axis: from the left
+def turn(degrees, axis):  # R_x, R_y or R_z of the notes
+    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
+    i, j = [(1, 2), (2, 0), (0, 1)]["xyz".index(axis)]
+    M = np.eye(3)
+    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
+    return M
+
+
+R1, R2, R3 = (turn(P[f"a{k}"], P[f"axis{k}"]) for k in (1, 2, 3))
+R = R1  # about a world axis, from R = I
+R = R @ R2  # about the camera's own axis: from the right
+R = R3 @ R  # about a world axis: from the left
 answer_fixed_vs_body = R""",
     "composed_angle": """\
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(alpha), -sp.sin(alpha)], [0, sp.sin(alpha), sp.cos(alpha)]])
@@ -76,7 +81,7 @@ MISTAKES = {
         "unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])",
         "no_two": "2 * answer_axis_of_rotation",
     },
-    "fixed_vs_body": {"all_body": "Rz @ Rx90 @ Rx60", "all_world": "Rx60 @ Rx90 @ Rz"},
+    "fixed_vs_body": {"all_body": "R1 @ R2 @ R3", "all_world": "R3 @ R2 @ R1"},
     "composed_angle": {
         "no_minus_one": "(Rx * Rz).trace() / 2",
         "sum": "sp.cos(alpha + beta)",

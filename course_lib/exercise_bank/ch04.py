@@ -109,7 +109,8 @@ Give a 3-vector.
         statement=r"""
 A camera starts aligned with the world frame ($R = I$). It turns by <<a1>>° about the world
 $<<axis1>>$ axis, then by <<a2>>° about its **own** (current) $<<axis2>>$ axis, then by <<a3>>°
-about the **world** $<<axis3>>$ axis. Find its final orientation $R$ (its axes written in the world frame). Give a 3x3 array.
+about the **world** $<<axis3>>$ axis. Find its final orientation $R$ (its axes written in the
+world frame). Give a 3x3 array.
 """,
         answer=Value(shape=(3, 3), rotation=True),
         tip="A turn about a world (fixed) axis multiplies from the left, a turn about the "

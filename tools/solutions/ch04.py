@@ -23,15 +23,14 @@ angle = sp.acos((0 - 1) / sp.Integer(2))  # tr R = 0: θ = 2π/3
 S = skew / (2 * sp.sin(angle))  # = ω̂
 answer_axis_of_rotation = sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])  # (2, 1, 2)/3""",
     "fixed_vs_body": """\
-def turn(degrees, axis):  # R_x, R_y or R_z of the notes
-    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
-    i, j = [(1, 2), (2, 0), (0, 1)]["xyz".index(axis)]
+turns = []  # R_x, R_y or R_z of the notes, for each of the three turns
+for k in (1, 2, 3):
+    c, s = np.cos(np.radians(P[f"a{k}"])), np.sin(np.radians(P[f"a{k}"]))
+    i, j = [(1, 2), (2, 0), (0, 1)]["xyz".index(P[f"axis{k}"])]  # the plane it turns
     M = np.eye(3)
     M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
-    return M
-
-
-R1, R2, R3 = (turn(P[f"a{k}"], P[f"axis{k}"]) for k in (1, 2, 3))
+    turns.append(M)
+R1, R2, R3 = turns
 R = R1  # about a world axis, from R = I
 R = R @ R2  # about the camera's own axis: from the right
 R = R3 @ R  # about a world axis: from the left

@@ -7,7 +7,8 @@
 
 For every variant key of the bank (an exercise's ``Variants.key``), row 0 is the exercise's
 default (the numbers of the course without variants) and rows 1 to ``COUNT - 1`` are drawn by
-``tools/variant_draws.py`` from seeds derived from the key, each redrawn until fit. The table
+``tools/variant_draws.py`` from seeds derived from the key, each redrawn until fit and
+different from the rows before it. The table
 holds parameters only (what the statements show), never an answer. Then run
 ``tools/exercise_fingerprints.py`` (``make exercises`` does both): the checker needs the
 fingerprints of every row.
@@ -61,7 +62,14 @@ def build(enabled=True):
         unfit = variant_draws.problems(key, default)
         if unfit:
             raise ValueError(f"variant key {key}: its default is unfit: {unfit}")
-        rows = [default] + [variant_draws.draw(key, [key_seed(key), k]) for k in range(1, COUNT)]
+        rows, seed = [default], 0
+        while len(rows) < COUNT:  # every row different: a repeat is drawn again
+            seed += 1
+            if seed > 20 * COUNT:
+                raise ValueError(f"variant key {key}: fewer than {COUNT} different fit draws")
+            row = variant_draws.draw(key, [key_seed(key), seed])
+            if row not in rows:
+                rows.append(row)
         tables[key] = rows
     return {"enabled": enabled, "keys": tables}
 

@@ -87,10 +87,9 @@ $\operatorname{tr} R = 1 + 2\cos\theta$. Give a number (radians).
         title="The axis of a rotation",
         statement=r"""
 Of a rotation $R = e^{\hat\omega\theta}$ with $\theta \in (0, \pi)$ we know only its trace,
-$\operatorname{tr} R = 0$, and its skew part
-$R - R^T = \frac{1}{\sqrt3}\begin{pmatrix} 0 & -2 & 1 \\ 2 & 0 & -2 \\ -1 & 2 & 0
-\end{pmatrix}$. Find the unit axis $\omega$ from $R - R^T = 2\sin\theta\,\hat\omega$.
-Give a 3-vector.
+$\operatorname{tr} R = <<trace_tex>>$, and its skew part
+$R - R^T = <<factor_tex>><<M>>$. Find the unit axis $\omega$ from
+$R - R^T = 2\sin\theta\,\hat\omega$. Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
         tip="The trace gives θ (so sin θ); then read ω̂ off (R − Rᵀ)/(2 sin θ): "
@@ -99,6 +98,16 @@ Give a 3-vector.
             "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length).",
             "no_two": "R − Rᵀ is twice the skew part sin θ ω̂: mind the factor 2.",
         },
+        variants=Variants(
+            "ch04_axis",
+            {
+                "trace_tex": "0",
+                "factor_tex": r"\frac{1}{\sqrt3}",
+                "M": [[0, -2, 1], [2, 0, -2], [-1, 2, 0]],
+                "trace": 0,
+                "factor": 3**-0.5,
+            },
+        ),  # fmt: skip
     ),
     Exercise(
         name="fixed_vs_body",
@@ -175,7 +184,7 @@ both factors to second order, multiply, and take the skew part $(R - R^T)/2 =
         title="Two half turns",
         statement=r"""
 Write $H(a) = R(a, \pi)$ for the half turn about a unit axis $a$. Take
-$u = \frac13(1,\ 2,\ 2)$ and $v = \frac13(-2,\ 1,\ -2)$, and the rotation
+$u = \frac{1}{<<n_u>>}<<q_u>>$ and $v = \frac{1}{<<n_v>>}<<q_v>>$, and the rotation
 $R = H(u)\,H(v)$ (the half turn about $v$, then the one about $u$, both about fixed axes).
 Find its rotation vector (exponential coordinates) $r = \omega\theta$ with a unit axis
 $\omega$ and $\theta \in [0, \pi]$. Give a 3-vector.
@@ -198,5 +207,8 @@ line, and how are $\theta$ and the angle between $u$ and $v$ related?
             "sum": "rotation vectors add only for turns about the same axis (section 7); u and "
             "v are different axes.",
         },
+        variants=Variants(
+            "ch04_half_turns", {"n_u": 3, "q_u": [1, 2, 2], "n_v": 3, "q_v": [-2, 1, -2]}
+        ),
     ),
 ]

@@ -117,8 +117,97 @@ def _camera_problems(p):
     return out
 
 
+#: Integer vectors of integer length (Pythagorean quadruples), no entry 0: unit axes q / n that
+#: a first-year can work with by hand and that lie along no coordinate axis or plane.
+_QUADRUPLES = [((1, 2, 2), 3), ((2, 3, 6), 7), ((1, 4, 8), 9), ((4, 4, 7), 9), ((2, 6, 9), 11),
+               ((6, 6, 7), 11), ((3, 4, 12), 13), ((2, 5, 14), 15), ((2, 10, 11), 15)]  # fmt: skip
+#: Angles of 4.4 with a trace and 2 sin θ a first-year writes exactly: (tr R, its LaTeX,
+#: 2 sin θ and the LaTeX of its root). θ = π/2 is left out: there 2 sin θ = 2 and the two known
+#: mistakes (no division by 2 sin θ; no factor 2) give the same vector.
+_AXIS_ANGLES = [(2.0, "2", 3**0.5, r"\sqrt3"), (0.0, "0", 3**0.5, r"\sqrt3"),
+                (1 + 2**0.5, r"1 + \sqrt2", 2**0.5, r"\sqrt2"),
+                (1 - 2**0.5, r"1 - \sqrt2", 2**0.5, r"\sqrt2")]  # fmt: skip
+
+
+def _unit_axis(rng):
+    """A random signed, permuted quadruple: ``(q, n)`` with ``q / n`` a unit vector."""
+    q, n = _QUADRUPLES[rng.integers(len(_QUADRUPLES))]
+    q = np.array(q)[rng.permutation(3)] * rng.choice([-1, 1], size=3)
+    return q.tolist(), n
+
+
+def _hat(q):
+    x, y, z = q
+    return [[0, -z, y], [z, 0, -x], [-y, x, 0]]
+
+
+def _axis(rng):
+    """A unit axis q / n and an angle of the table: tr R and R − Rᵀ = (2 sin θ / n) q̂."""
+    q, n = _unit_axis(rng)
+    trace, trace_tex, two_sin, root = _AXIS_ANGLES[rng.integers(len(_AXIS_ANGLES))]
+    return {"trace_tex": trace_tex, "factor_tex": rf"\frac{{{root}}}{{{n}}}", "M": _hat(q),
+            "trace": trace, "factor": two_sin / n}  # fmt: skip
+
+
+def _axis_problems(p):
+    skew = p["factor"] * np.array(p["M"], dtype=float)
+    c = (p["trace"] - 1) / 2
+    out = []
+    if not -0.95 < c < 0.95:
+        out.append("θ too close to 0 or π: the axis is ill-conditioned")
+    sin = np.sqrt(max(0.0, 1 - c * c))
+    S = skew / (2 * sin)
+    w = np.array([S[2, 1], S[0, 2], S[1, 0]])
+    if abs(np.linalg.norm(w) - 1) > 1e-9 or np.abs(S + S.T).max() > 1e-12:
+        out.append("the trace and the skew part belong to no rotation")
+    if np.abs(w).min() < 0.05:
+        out.append("the axis lies along a coordinate plane or axis")
+    values = {"answer": w, "unnormalized": 2 * sin * w, "no_two": 2 * w}
+    out += _apart("axis_of_rotation", values)
+    return out
+
+
+def _apart(exercise, values, gap=0.01):
+    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
+    names = list(values)
+    return [
+        f"{exercise}: {a} and {b} are too close"
+        for i, a in enumerate(names)
+        for b in names[i + 1 :]
+        if np.abs(np.asarray(values[a]) - np.asarray(values[b])).max() < gap
+    ]
+
+
+def _half_turns(rng):
+    (q_u, n_u), (q_v, n_v) = _unit_axis(rng), _unit_axis(rng)
+    return {"n_u": n_u, "q_u": q_u, "n_v": n_v, "q_v": q_v}
+
+
+def _half_turns_problems(p):
+    u, v = np.array(p["q_u"]) / p["n_u"], np.array(p["q_v"]) / p["n_v"]
+    out = []
+    d = float(u @ v)
+    if abs(d) > 0.9:
+        out.append("u and v are nearly the same line: the product is nearly I")
+    if abs(d) < 0.2:
+        out.append("u and v are nearly perpendicular: the product is nearly a half turn")
+    if out:
+        return out
+    H = lambda a: 2 * np.outer(a, a) - np.eye(3)  # noqa: E731
+    R = H(u) @ H(v)
+    angle = np.arccos(np.clip((np.trace(R) - 1) / 2, -1, 1))
+    s = np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]) / 2
+    axis = s / np.linalg.norm(s)
+    values = {"answer": angle * axis, "order": -angle * axis,
+              "long_way": (angle - 2 * np.pi) * axis, "single_angle": angle / 2 * axis,
+              "unit_axis": axis, "sum": np.pi * (u + v)}  # fmt: skip
+    return out + _apart("two_half_turns", values)
+
+
 DRAWS = {
     "ch04_frames": (_frames, _frames_problems),
     "ch04_trace": (_trace, _trace_problems),
     "ch04_camera": (_camera, _camera_problems),
+    "ch04_axis": (_axis, _axis_problems),
+    "ch04_half_turns": (_half_turns, _half_turns_problems),
 }

@@ -18,10 +18,10 @@ answer_chain_vector = R_ab @ (R_bc @ v_c)""",
 trace = sum(sp.Rational(str(P[k])) for k in ("R11", "R22", "R33"))  # only the diagonal
 answer_angle_from_trace = sp.acos((trace - 1) / 2)""",
     "axis_of_rotation": """\
-skew = sp.Matrix([[0, -2, 1], [2, 0, -2], [-1, 2, 0]]) / sp.sqrt(3)  # R − Rᵀ
-angle = sp.acos((0 - 1) / sp.Integer(2))  # tr R = 0: θ = 2π/3
-S = skew / (2 * sp.sin(angle))  # = ω̂
-answer_axis_of_rotation = sp.Matrix([S[2, 1], S[0, 2], S[1, 0]])  # (2, 1, 2)/3""",
+skew = P["factor"] * np.array(P["M"])  # R − Rᵀ, as given
+angle = np.arccos((P["trace"] - 1) / 2)  # from tr R = 1 + 2 cos θ
+S = skew / (2 * np.sin(angle))  # = ω̂
+answer_axis_of_rotation = np.array([S[2, 1], S[0, 2], S[1, 0]])""",
     "fixed_vs_body": """\
 turns = []  # R_x, R_y or R_z of the notes, for each of the three turns
 for k in (1, 2, 3):
@@ -54,18 +54,18 @@ keep = lambda e: sum(
 )
 answer_small_angle = vec.applyfunc(keep)  # (α, αβ/2, β)""",
     "two_half_turns": """\
-u = sp.Matrix([1, 2, 2]) / 3
-v = sp.Matrix([-2, 1, -2]) / 3
+u = sp.Matrix(P["q_u"]) / P["n_u"]
+v = sp.Matrix(P["q_v"]) / P["n_v"]
 H = lambda a: 2 * a * a.T - sp.eye(3)  # R(a, π) = I + 2â² = 2aaᵀ − I
 R = H(u) * H(v)
 n = u.cross(v)  # both half turns map the line of n onto itself (n → −n → n)
 # In the plane ⟂ n each half turn is a mirror in the line of its axis; two mirrors at angle α
-# make a turn by 2α. Here u·v = −4/9 (α > 90°), so the short way is θ = 2π − 2α:
-cos_t = (R.trace() - 1) / 2  # = 2(u·v)² − 1 = −49/81
+# make a turn by 2α; when α > 90° (u·v < 0) the short way is θ = 2π − 2α:
+cos_t = (R.trace() - 1) / 2  # = 2(u·v)² − 1
 s = sp.Matrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]) / 2  # sin θ ω
 assert s.cross(n) == sp.zeros(3, 1)  # the axis lies along u × v
-angle = sp.acos(cos_t)  # in [0, π]: 2 acos(4/9)
-answer_two_half_turns = angle * s / s.norm()  # ω θ along +u × v""",
+angle = sp.acos(cos_t)  # in [0, π]
+answer_two_half_turns = angle * s / s.norm()  # ω θ, ω along ±u × v""",
 }
 
 MISTAKES = {
@@ -77,7 +77,7 @@ MISTAKES = {
     },
     "angle_from_trace": {"cosine": "(trace - 1) / 2", "no_minus_one": "sp.acos(trace / 2)"},
     "axis_of_rotation": {
-        "unnormalized": "sp.Matrix([skew[2, 1], skew[0, 2], skew[1, 0]])",
+        "unnormalized": "np.array([skew[2, 1], skew[0, 2], skew[1, 0]])",
         "no_two": "2 * answer_axis_of_rotation",
     },
     "fixed_vs_body": {"all_body": "R1 @ R2 @ R3", "all_world": "R3 @ R2 @ R1"},

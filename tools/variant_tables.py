@@ -6,7 +6,8 @@
     python tools/variant_tables.py --check  # exit 1 if the file is not what this would write
 
 For every variant key of the bank (an exercise's ``Variants.key``), row 0 is the exercise's
-default (the numbers of the course without variants) and rows 1 to ``COUNT - 1`` are drawn by
+default (the numbers of the course without variants) and rows 1 to ``COUNT - 1`` (fewer when
+there are fewer different fit numbers, at least ``MIN_ROWS``) are drawn by
 ``tools/variant_draws.py`` from seeds derived from the key, each redrawn until fit and
 different from the rows before it. The table
 holds parameters only (what the statements show), never an answer. Then run
@@ -35,6 +36,9 @@ from course_lib.exercises._variants import TABLE_FILE  # noqa: E402
 TARGET = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 #: Variants per key, the default included: 1 in 32 students share a neighbour's numbers.
 COUNT = 32
+#: Fewer different fit draws than this (in 20 x COUNT tries) is an error; between this and
+#: COUNT the key keeps what it has (a small space: the 18 unit quaternions of 5.2, say).
+MIN_ROWS = 8
 
 
 def key_seed(key):
@@ -62,14 +66,15 @@ def build(enabled=True):
         unfit = variant_draws.problems(key, default)
         if unfit:
             raise ValueError(f"variant key {key}: its default is unfit: {unfit}")
-        rows, seed = [default], 0
-        while len(rows) < COUNT:  # every row different: a repeat is drawn again
-            seed += 1
-            if seed > 20 * COUNT:
-                raise ValueError(f"variant key {key}: fewer than {COUNT} different fit draws")
+        rows = [default]
+        for seed in range(1, 20 * COUNT):  # every row different: a repeat is drawn again
             row = variant_draws.draw(key, [key_seed(key), seed])
             if row not in rows:
                 rows.append(row)
+            if len(rows) == COUNT:
+                break
+        if len(rows) < MIN_ROWS:  # a small space of fit numbers: too many students share
+            raise ValueError(f"variant key {key}: only {len(rows)} different fit draws")
         tables[key] = rows
     return {"enabled": enabled, "keys": tables}
 

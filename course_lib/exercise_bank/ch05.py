@@ -1,12 +1,12 @@
 r"""Exercises of chapter 5 (orientation in practice: Euler angles, gimbal lock, quaternions)."""
 
-from course_lib.exercises._model import Exercise, Value
+from course_lib.exercises._model import Exercise, Value, Variants
 
 CHAPTER = 5
 SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
     "from course_lib import euler, quaternion, so3\n"
-    "from course_lib.exercises import check"
+    "from course_lib.exercises import check, parameters"
 )
 
 EXERCISES = [
@@ -17,18 +17,19 @@ EXERCISES = [
         level="warm-up",
         title="The quaternion of a turn",
         statement=r"""
-Give the unit quaternion $q = (w, x, y, z)$, scalar first, of the turn by $90°$ about the axis
-through $(1, 2, 2)$ (a direction, not yet a unit vector), with $w > 0$. Give a 4-vector.
+Give the unit quaternion $q = (w, x, y, z)$, scalar first, of the turn by $<<angle>>°$ about the
+axis through $<<direction>>$ (a direction, not yet a unit vector), with $w > 0$. Give a 4-vector.
 """,
         answer=Value(shape=(4,)),
         tip="q = (cos θ/2, ω sin θ/2) with a unit axis ω and θ in radians.",
         mistakes={
             "full_angle": "a quaternion holds half the angle: cos θ/2 and sin θ/2, not θ.",
-            "not_unit": "the axis must be a unit vector first: divide (1, 2, 2) by its length.",
+            "not_unit": "the axis must be a unit vector first: divide the direction by its length.",
             "scalar_last": "this course writes the scalar first, (w, x, y, z), not ROS's "
             "(x, y, z, w).",
             "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
         },
+        variants=Variants("ch05_turn", {"angle": 90, "direction": [1, 2, 2]}),
     ),
     Exercise(
         name="angle_from_ros",
@@ -37,18 +38,18 @@ through $(1, 2, 2)$ (a direction, not yet a unit vector), with $w > 0$. Give a 4
         level="warm-up",
         title="The angle of a ROS orientation",
         statement=r"""
-A ROS message holds the orientation `x: 0.0, y: 0.0, z: 0.6, w: 0.8` (scalar last). It is a
-turn about the $z$ axis. By what angle $\theta$, in radians, between $0$ and $\pi$? Give a
-number.
+A ROS message holds the orientation `x: <<x>>, y: <<y>>, z: <<z>>, w: <<w>>` (scalar last).
+It is a turn about the $<<axis>>$ axis. By what angle $\theta$, in radians, between $0$ and
+$\pi$? Give a number.
 """,
         answer=Value(angle=True),
         tip="Put the four numbers in this course's order first, then use what §4 says the "
         "scalar part of a turn's quaternion is.",
         mistakes={
-            "scalar_first": "ROS writes the scalar last: w = 0.8 is the fourth number, "
-            "not the first.",
+            "scalar_first": "ROS writes the scalar last: w is the fourth number, not the first.",
             "half": "that is θ/2: a quaternion holds half the angle.",
         },
+        variants=Variants("ch05_ros", {"x": 0.0, "y": 0.0, "z": 0.6, "w": 0.8, "axis": "z"}),
     ),
     Exercise(
         name="compose_quaternions",
@@ -57,9 +58,9 @@ number.
         level="core",
         title="Two turns as one quaternion",
         statement=r"""
-A body starts at the identity. It turns by $90°$ about the **world** $x$ axis, then by $90°$
-about the **world** $z$ axis. Give the unit quaternion $(w, x, y, z)$ of its final
-orientation, with $w > 0$. Give a 4-vector.
+A body starts at the identity. It turns by $<<a1>>°$ about the **world** $<<axis1>>$ axis, then
+by $<<a2>>°$ about the **world** $<<axis2>>$ axis. Give the unit quaternion $(w, x, y, z)$ of its
+final orientation, with $w > 0$. Give a 4-vector.
 """,
         answer=Value(shape=(4,)),
         tip="Quaternions compose like matrices: a turn about a fixed (world) axis multiplies "
@@ -69,6 +70,7 @@ orientation, with $w > 0$. Give a 4-vector.
             "from the left.",
             "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
         },
+        variants=Variants("ch05_two_turns", {"a1": 90, "axis1": "x", "a2": 90, "axis2": "z"}),
     ),
     Exercise(
         name="proper_euler_angles",
@@ -112,7 +114,7 @@ the 3-vector $(\alpha, \beta, \gamma)$ in radians.
         title="The angular velocity that angle rates cannot give",
         statement=r"""
 A drone's yaw, pitch and roll (intrinsic Z-Y-X, as in the chapter) are yaw $0$, pitch $90°$ and
-roll $30°$. Whatever rates $(\dot\psi, \dot\theta, \dot\phi)$ its angles change at, its
+roll $<<roll>>°$. Whatever rates $(\dot\psi, \dot\theta, \dot\phi)$ its angles change at, its
 angular velocity in body coordinates is $\omega_b = E\,(\dot\psi, \dot\theta, \dot\phi)^T$, and
 at this orientation these $\omega_b$ do not fill space. Give the unit vector $n$, in body
 coordinates, that is orthogonal to every $\omega_b$ the rates can produce; of the two such
@@ -134,6 +136,7 @@ unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
             "sign": "there are two unit normals; the statement picks the one with a positive "
             "dot product with (1, 1, 1).",
         },
+        variants=Variants("ch05_gimbal", {"roll": 30}),
     ),
     Exercise(
         name="slerp_angular_velocity",
@@ -171,8 +174,8 @@ $\dot R = \hat\omega R$.
         level="challenge",
         title="How far apart are two orientations?",
         statement=r"""
-Two orientations arrive from two sources: $q_0 = (0.6, 0.8, 0, 0)$ from `course_lib`
-(scalar first), and $q_1$ as a ROS message, `x: 0.0, y: 0.0, z: 0.6, w: -0.8`. Find the angle
+Two orientations arrive from two sources: $q_0 = <<q0>>$ from `course_lib`
+(scalar first), and $q_1$ as a ROS message, `x: <<x>>, y: <<y>>, z: <<z>>, w: <<w>>`. Find the angle
 $\theta \in [0, \pi]$ of the rotation that takes the first orientation to the second,
 $R_0^TR_1$, in radians. Give a number.
 """,
@@ -186,5 +189,9 @@ $R_0^TR_1$, in radians. Give a number.
             "scalar_last": "q₁ came as a ROS message, scalar last: put it in the order "
             "(w, x, y, z) before computing with it.",
         },
+        variants=Variants(
+            "ch05_two_sources",
+            {"q0": [0.6, 0.8, 0.0, 0.0], "x": 0.0, "y": 0.0, "z": 0.6, "w": -0.8},
+        ),
     ),
 ]

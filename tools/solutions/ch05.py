@@ -1,17 +1,22 @@
-"""Reference solutions of chapter 5 (instructor side; not part of the installed package)."""
+"""Reference solutions of chapter 5 (instructor side; not part of the installed package).
+
+An exercise with variants reads its numbers from ``P`` (tools/solutions/ch04.py says how).
+"""
 
 SOLUTIONS = {
     "quaternion_of_turn": """\
-axis = sp.Matrix([1, 2, 2]) / 3  # unit: ‖(1, 2, 2)‖ = 3
-half = sp.pi / 4  # θ/2
+direction = sp.Matrix(P["direction"])
+axis = direction / direction.norm()  # unit
+half = sp.pi * P["angle"] / 360  # θ/2 in radians
 answer_quaternion_of_turn = [sp.cos(half), *(sp.sin(half) * axis)]""",
     "angle_from_ros": """\
-x, y, z, w = 0.0, 0.0, 0.6, 0.8  # ROS order: scalar last
-answer_angle_from_ros = 2 * np.arctan2(z, w)""",
+x, y, z, w = P["x"], P["y"], P["z"], P["w"]  # ROS order: scalar last
+answer_angle_from_ros = 2 * np.arctan2(np.linalg.norm([x, y, z]), w)""",
     "compose_quaternions": """\
-q_x = quaternion.from_axis_angle([1, 0, 0], np.pi / 2)
-q_z = quaternion.from_axis_angle([0, 0, 1], np.pi / 2)
-answer_compose_quaternions = quaternion.multiply(q_z, q_x)  # world axes: from the left""",
+axes = {"x": [1, 0, 0], "y": [0, 1, 0], "z": [0, 0, 1]}
+q_1 = quaternion.from_axis_angle(axes[P["axis1"]], np.radians(P["a1"]))  # the first turn
+q_2 = quaternion.from_axis_angle(axes[P["axis2"]], np.radians(P["a2"]))
+answer_compose_quaternions = quaternion.multiply(q_2, q_1)  # world axes: from the left""",
     "proper_euler_angles": """\
 R = sp.Matrix(
     [
@@ -27,13 +32,14 @@ beta = -sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
 gamma = sp.atan2(-R[2, 1], R[2, 0])
 answer_proper_euler_angles = [alpha, beta, gamma]  # (π/2, −2π/3, −5π/6)""",
     "unreachable_omega": """\
-phi = sp.pi / 6  # roll 30°, pitch 90°, yaw 0
+phi = sp.pi * P["roll"] / 180  # pitch 90°, yaw 0
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
 Ry = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])  # R_y(90°)
 e_x, e_y, e_z = (sp.eye(3)[:, k] for k in range(3))  # the coordinate axes
 yaw_col, pitch_col, roll_col = Rx.T * Ry.T * e_z, Rx.T * e_y, e_x  # yaw_col = −roll_col
 n = roll_col.cross(pitch_col)
-answer_unreachable_omega = list(n / n.norm())  # (0, 1/2, √3/2)""",
+n = n * sp.sign(sum(n))  # of the two normals, the one with n · (1, 1, 1) > 0
+answer_unreachable_omega = list(n / n.norm())""",
     "slerp_angular_velocity": """\
 q0 = np.array([np.sqrt(2) / 2, np.sqrt(2) / 2, 0, 0])
 q1 = np.array([-np.sqrt(2) / 4, -np.sqrt(2) / 4, -np.sqrt(6) / 4, -np.sqrt(6) / 4])
@@ -41,8 +47,8 @@ R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
 T = 3.0
 answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world: (0, 0, 2π/9)""",
     "angle_between_quaternions": """\
-q0 = np.array([0.6, 0.8, 0, 0])
-x, y, z, w = 0.0, 0.0, 0.6, -0.8  # the ROS message, scalar last
+q0 = np.array(P["q0"])
+x, y, z, w = P["x"], P["y"], P["z"], P["w"]  # the ROS message, scalar last
 q1 = np.array([w, x, y, z])
 answer_angle_between_quaternions = 2 * np.arccos(abs(q0 @ q1))""",
 }
@@ -50,14 +56,17 @@ answer_angle_between_quaternions = 2 * np.arccos(abs(q0 @ q1))""",
 MISTAKES = {
     "quaternion_of_turn": {
         "full_angle": "[sp.cos(2 * half), *(sp.sin(2 * half) * axis)]",
-        "not_unit": "[sp.cos(half), *(sp.sin(half) * 3 * axis)]",
+        "not_unit": "[sp.cos(half), *(sp.sin(half) * direction)]",
         "scalar_last": "[*(sp.sin(half) * axis), sp.cos(half)]",
         "negated": "[-sp.cos(half), *(-sp.sin(half) * axis)]",
     },
-    "angle_from_ros": {"scalar_first": "2 * np.arccos(x)", "half": "np.arctan2(z, w)"},
+    "angle_from_ros": {
+        "scalar_first": "2 * np.arccos(x)",
+        "half": "np.arctan2(np.linalg.norm([x, y, z]), w)",
+    },
     "compose_quaternions": {
-        "order": "quaternion.multiply(q_x, q_z)",
-        "negated": "-quaternion.multiply(q_z, q_x)",
+        "order": "quaternion.multiply(q_1, q_2)",
+        "negated": "-quaternion.multiply(q_2, q_1)",
     },
     "proper_euler_angles": {
         "reversed": "[gamma, beta, alpha]",

@@ -2,13 +2,13 @@ r"""Exercises of chapter 1 (§0.1.1 rigid bodies and rigid body motions)."""
 
 import sympy as sp
 
-from course_lib.exercises._model import Choice, Exercise, Expr, Value
+from course_lib.exercises._model import Choice, Exercise, Expr, Value, Variants
 from course_lib.symbolic import t, x, xx, xy, y, yy, z
 
 CHAPTER = 1
 SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
-    "from course_lib.exercises import check, t, x, xx, xy, y, yy, z"
+    "from course_lib.exercises import check, parameters, t, x, xx, xy, y, yy, z"
 )
 
 _HELIX = sp.Matrix([sp.cos(2 * t), sp.sin(2 * t), 3 * t])  # p(t), as in the statement
@@ -30,10 +30,10 @@ EXERCISES = [
         level="warm-up",
         title="Coordinates by projection",
         statement=r"""
-A right-handed orthonormal frame has its origin at $o = (1,\ 1,\ 0)$, and its three axes point
-along the directions $(1,\ 1,\ 0)$, $(-1,\ 1,\ 0)$ and $(0,\ 0,\ 2)$ (in reference
+A right-handed orthonormal frame has its origin at $o = <<o>>$, and its three axes point
+along the directions $<<d1>>$, $<<d2>>$ and $<<d3>>$ (in reference
 coordinates; these are directions, not yet unit vectors). The point $p$ has reference
-coordinates $(3,\ 1,\ 2)$. Find its coordinates in this frame, measured from the frame's own
+coordinates $<<p>>$. Find its coordinates in this frame, measured from the frame's own
 origin (equations (3)–(5) and the note on them). Give a 3-vector (list, numpy array or sympy
 Matrix).
 """,
@@ -49,6 +49,10 @@ Matrix).
             "unnormalized": "the given directions are not unit vectors: divide each by its "
             "length before projecting (equation (1)).",
         },
+        variants=Variants(
+            "ch01_frame",
+            {"o": [1, 1, 0], "d1": [1, 1, 0], "d2": [-1, 1, 0], "d3": [0, 0, 2], "p": [3, 1, 2]},
+        ),
     ),
     Exercise(
         name="angle_from_lengths",
@@ -57,8 +61,8 @@ Matrix).
         level="warm-up",
         title="An angle from three lengths",
         statement=r"""
-Two vectors have the lengths $\lVert x\rVert = 3$ and $\lVert y\rVert = 4$, and
-$\lVert x - y\rVert = \sqrt{13}$. Find the angle between the two diagonals $x - y$ and
+Two vectors have the lengths $\lVert x\rVert = <<a>>$ and $\lVert y\rVert = <<b>>$, and
+$\lVert x - y\rVert = \sqrt{<<m>>}$. Find the angle between the two diagonals $x - y$ and
 $x + y$ of the parallelogram spanned by $x$ and $y$ (lengths and inner products only: no
 coordinates are needed). Give the angle in radians, in $[0, \pi]$.
 """,
@@ -74,6 +78,7 @@ coordinates are needed). Give the angle in radians, in $[0, \pi]$.
             "reversed": "that is the angle between y − x and x + y (π minus the right one): "
             "mind the order in x − y.",
         },
+        variants=Variants("ch01_lengths", {"a": 3, "b": 4, "m": 13}),
     ),
     Exercise(
         name="which_are_rigid",
@@ -170,9 +175,9 @@ with sympy). Give the pair $(\alpha, \beta)$ as a list of two expressions.
         level="challenge",
         title="A motion from three points",
         statement=r"""
-A rigid body transformation $g(p) = Rp + d$ maps the three points $a = (3, 3, 0)$,
-$b = (0, 3, 3)$ and $c = (3, 0, 3)$ to $g(a) = (2, 6, 4)$, $g(b) = (2, 3, 7)$ and
-$g(c) = (5, 3, 4)$. Find $R$. None of the points is the origin or a basis vector, and
+A rigid body transformation $g(p) = Rp + d$ maps the three points $a = <<a>>$,
+$b = <<b>>$ and $c = <<c>>$ to $g(a) = <<ga>>$, $g(b) = <<gb>>$ and
+$g(c) = <<gc>>$. Find $R$. None of the points is the origin or a basis vector, and
 $b - a$, $c - a$ are not perpendicular, so no column of $R$ can be read off directly: use what
 Definition 1 says about differences of points and about cross products.
 Give a 3x3 array or matrix.
@@ -188,5 +193,16 @@ Give a 3x3 array or matrix.
             "columns": "b − a is not a basis vector, so R(b − a) is not a column of R: relate "
             "R to the vectors you know and solve for it.",
         },
+        variants=Variants(
+            "ch01_motion",
+            {
+                "a": [3, 3, 0],
+                "b": [0, 3, 3],
+                "c": [3, 0, 3],
+                "ga": [2, 6, 4],
+                "gb": [2, 3, 7],
+                "gc": [5, 3, 4],
+            },
+        ),  # fmt: skip
     ),
 ]

@@ -7,16 +7,16 @@ answer}; tools/exercise_fingerprints.py stores fingerprints of both, never the c
 
 SOLUTIONS = {
     "coords_by_projection": """\
-o, p = np.array([1, 1, 0]), np.array([3, 1, 2])
-directions = [np.array([1, 1, 0]), np.array([-1, 1, 0]), np.array([0, 0, 2])]
+o, p = np.array(P["o"]), np.array(P["p"])
+directions = [np.array(P[k]) for k in ("d1", "d2", "d3")]
 e1, e2, e3 = [v / np.linalg.norm(v) for v in directions]  # unit vectors, eq. (1)
 answer_coords_by_projection = [(p - o) @ e1, (p - o) @ e2, (p - o) @ e3]  # eqs (3)-(5)""",
     "angle_from_lengths": """\
-# 13 = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy = 9 + 16 − 2 xᵀy
-x_dot_y = sp.Rational(9 + 16 - 13, 2)
-diagonals_dot = 9 - 16  # (x − y)ᵀ(x + y) = ‖x‖² − ‖y‖²
-sum_length = sp.sqrt(9 + 16 + 2 * x_dot_y)  # ‖x + y‖² = ‖x‖² + ‖y‖² + 2 xᵀy
-answer_angle_from_lengths = sp.acos(diagonals_dot / (sp.sqrt(13) * sum_length))""",
+a, b, m = P["a"], P["b"], P["m"]  # ‖x‖, ‖y‖ and ‖x − y‖²
+x_dot_y = sp.Rational(a**2 + b**2 - m, 2)  # m = ‖x − y‖² = ‖x‖² + ‖y‖² − 2 xᵀy
+diagonals_dot = a**2 - b**2  # (x − y)ᵀ(x + y) = ‖x‖² − ‖y‖²
+sum_length = sp.sqrt(a**2 + b**2 + 2 * x_dot_y)  # ‖x + y‖² = ‖x‖² + ‖y‖² + 2 xᵀy
+answer_angle_from_lengths = sp.acos(diagonals_dot / (sp.sqrt(m) * sum_length))""",
     "which_are_rigid": """\
 # g(p) = M p + d keeps distances iff M is orthogonal; it keeps cross products iff det M = +1
 half_z = np.diag([-1, 1, 1]) @ np.diag([1, -1, 1])  # = diag(-1, -1, 1)
@@ -48,8 +48,8 @@ alpha_, beta_ = x.dot(z), -x.dot(y)
 assert sp.expand(lhs - (alpha_ * y + beta_ * z)) == sp.zeros(3, 1)
 answer_bac_cab = [alpha_, beta_]""",
     "motion_from_points": """\
-a, b, c = np.array([3, 3, 0]), np.array([0, 3, 3]), np.array([3, 0, 3])
-ga, gb, gc = np.array([2, 6, 4]), np.array([2, 3, 7]), np.array([5, 3, 4])
+a, b, c = (np.array(P[k]) for k in ("a", "b", "c"))
+ga, gb, gc = (np.array(P[k]) for k in ("ga", "gb", "gc"))
 u, v, gu, gv = b - a, c - a, gb - ga, gc - ga  # g_*(u) = R u: d drops out
 F = np.column_stack([u, v, np.cross(u, v)])
 G = np.column_stack([gu, gv, np.cross(gu, gv)])  # condition 2: g_*(u × v) = gu × gv
@@ -63,10 +63,10 @@ MISTAKES = {
         "unnormalized": "[(p - o) @ v for v in directions]",
     },
     "angle_from_lengths": {
-        "cosine": "diagonals_dot / (sp.sqrt(13) * sum_length)",
-        "sign": "sp.acos(diagonals_dot / (sp.sqrt(13) * sp.sqrt(9 + 16 - 2 * x_dot_y)))",
-        "x_and_y": "sp.acos(x_dot_y / (3 * 4))",
-        "reversed": "sp.acos(-diagonals_dot / (sp.sqrt(13) * sum_length))",
+        "cosine": "diagonals_dot / (sp.sqrt(m) * sum_length)",
+        "sign": "sp.acos(diagonals_dot / (sp.sqrt(m) * sp.sqrt(a**2 + b**2 - 2 * x_dot_y)))",
+        "x_and_y": "sp.acos(x_dot_y / (a * b))",
+        "reversed": "sp.acos(-diagonals_dot / (sp.sqrt(m) * sum_length))",
     },
     "which_are_rigid": {
         "mirrors": '{"a", "b", "c", "d", "e", "f"}',

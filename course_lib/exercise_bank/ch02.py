@@ -1,12 +1,12 @@
 r"""Exercises of chapter 2 (§0.1.2 rotations, SO(3), coordinate changes, the hat map)."""
 
-from course_lib.exercises._model import Choice, Exercise, Expr, Value
+from course_lib.exercises._model import Choice, Exercise, Expr, Value, Variants
 from course_lib.symbolic import A, B, R, X, Y, d
 
 CHAPTER = 2
 SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
-    "from course_lib.exercises import A, B, R, X, Y, check, d, hat, x, y"
+    "from course_lib.exercises import A, B, R, X, Y, check, d, hat, parameters, x, y"
 )
 
 EXERCISES = [
@@ -45,8 +45,8 @@ Give the set of letters, e.g. `{"a", "c"}` or the string `"ac"`.
         level="warm-up",
         title="From a-coordinates to b-coordinates",
         statement=r"""
-Two of frame $B$'s axes, written in frame $A$, are $x_{ab} = (0, 0, 1)$ and
-$y_{ab} = (1, 0, 0)$; $B$ is right-handed. A vector has the coordinates $v_a = (1, 2, 3)$ in
+Two of frame $B$'s axes, written in frame $A$, are $x_{ab} = <<x_ab>>$ and
+$y_{ab} = <<y_ab>>$; $B$ is right-handed. A vector has the coordinates $v_a = <<v_a>>$ in
 $A$. Find its coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-vector.
 """,
         answer=Value(shape=(3,)),
@@ -58,6 +58,7 @@ $A$. Find its coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-
             "left_handed": "your z_ab points the wrong way: a right-handed frame has "
             "z_ab = x_ab × y_ab, in that order.",
         },
+        variants=Variants("ch02_frame", {"x_ab": [0, 0, 1], "y_ab": [1, 0, 0], "v_a": [1, 2, 3]}),
     ),
     Exercise(
         name="complete_rotation",
@@ -67,7 +68,7 @@ $A$. Find its coordinates $v_b$ in $B$ (equation (64) read backwards). Give a 3-
         title="Complete a rotation matrix",
         statement=r"""
 Find the three missing entries $(a, b, c)$ that make
-$R = \begin{pmatrix} 2/3 & -2/3 & a \\ 1/3 & b & -2/3 \\ c & 1/3 & 2/3 \end{pmatrix}$
+$R = <<R>>$
 a rotation matrix (Proposition 3: its columns are orthonormal). Give the 3-vector
 $(a, b, c)$, and check $\det R = +1$.
 """,
@@ -78,6 +79,10 @@ $(a, b, c)$, and check $\det R = +1$.
             "abs": "the unit lengths fix only |a|, |b|, |c|: the signs come from the "
             "orthogonality of the columns, r₁ · r₃ = 0 and r₁ · r₂ = 0."
         },
+        variants=Variants(
+            "ch02_missing",
+            {"R": [["2/3", "-2/3", "a"], ["1/3", "b", "-2/3"], ["c", "1/3", "2/3"]]},
+        ),
     ),
     Exercise(
         name="inverse_of_product",
@@ -147,7 +152,7 @@ The mirrors $M_i = I - 2 n_i n_i^T$ have the unit normals $n_1 = (1, 0, 0)$ and
 $n_2 = (\cos\psi, \sin\psi, 0)$. Show that $R = M_2 M_1$ is in SO(3) (each $M_i$ is
 orthogonal with $\det M_i = -1$) and that it is a rotation about $z$, $R = R_z(\theta)$; find
 $\theta$ as a function of $\psi$. Then find the $\psi \in (0, \pi)$ for which
-$M_2 M_1 = R_z(100°)$. Give $\psi$ (radians).
+$M_2 M_1 = R_z(<<turn>>°)$. Give $\psi$ (radians).
 """,
         answer=Value(shape=(), angle=True),
         tip="Compute R = M₂M₁ with sympy for a symbolic ψ and compare its first column with "
@@ -155,7 +160,9 @@ $M_2 M_1 = R_z(100°)$. Give $\psi$ (radians).
         mistakes={
             "double": "that ψ makes M₂M₁ turn by twice that angle: two reflections turn by "
             "twice the angle between their mirrors.",
-            "order": "with that ψ it is M₁M₂ that equals R_z(100°): R = M₂M₁ applies M₁ first.",
+            "order": "with that ψ it is M₁M₂ that equals R_z(<<turn>>°): R = M₂M₁ applies M₁ "
+            "first.",
         },
+        variants=Variants("ch02_mirrors", {"turn": 100}),
     ),
 ]

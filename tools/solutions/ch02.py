@@ -11,13 +11,14 @@ Q = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]])  # R = S = R_z(90°)
 assert not np.allclose((2 * Q - np.eye(3)).T @ (2 * Q - np.eye(3)), np.eye(3))  # (e) fails
 answer_which_in_so3 = {"a", "c", "d"}""",
     "vb_from_va": """\
-x_ab, y_ab = np.array([0, 0, 1]), np.array([1, 0, 0])
+x_ab, y_ab = np.array(P["x_ab"]), np.array(P["y_ab"])
 R_ab = np.column_stack([x_ab, y_ab, np.cross(x_ab, y_ab)])  # right-handed: z = x × y
-v_a = np.array([1, 2, 3])
+v_a = np.array(P["v_a"])
 answer_vb_from_va = R_ab.T @ v_a  # v_b = R_ba v_a = R_abᵀ v_a""",
     "complete_rotation": """\
 a_, b_, c_ = sp.symbols("a b c", real=True)
-Rm = sp.Matrix([[2, -2, 3 * a_], [1, 3 * b_, -2], [3 * c_, 1, 2]]) / 3
+unknowns = {"a": a_, "b": b_, "c": c_}
+Rm = sp.Matrix([[unknowns.get(e) or sp.Rational(e) for e in row] for row in P["R"]])
 equations = list(Rm.T * Rm - sp.eye(3))  # orthonormal columns (Proposition 3)
 solutions_abc = sp.solve(equations, [a_, b_, c_], dict=True)
 assert len(solutions_abc) == 1 and Rm.subs(solutions_abc[0]).det() == 1
@@ -37,7 +38,7 @@ n1, n2 = sp.Matrix([1, 0, 0]), sp.Matrix([sp.cos(psi), sp.sin(psi), 0])
 M1, M2 = sp.eye(3) - 2 * n1 * n1.T, sp.eye(3) - 2 * n2 * n2.T
 turn = (M2 * M1).applyfunc(sp.trigsimp)  # = R_z(2ψ): first column (cos 2ψ, sin 2ψ, 0)
 assert (turn - sp.rot_ccw_axis3(2 * psi)).applyfunc(sp.trigsimp) == sp.zeros(3, 3)
-answer_two_mirrors = sp.pi * 100 / 180 / 2  # 2ψ = 100°""",
+answer_two_mirrors = sp.pi * P["turn"] / 180 / 2  # 2ψ = the turn""",
 }
 
 MISTAKES = {
@@ -54,5 +55,8 @@ MISTAKES = {
     "complete_rotation": {"abs": "[abs(v) for v in answer_complete_rotation]"},
     "inverse_of_product": {"order": "A.T * B", "forward": "A * B.T", "bc": "B.T * A.T"},
     "rigid_inverse": {"minus_d": "-d", "no_transpose": "-R * d"},
-    "two_mirrors": {"double": "sp.pi * 100 / 180", "order": "sp.pi - sp.pi * 100 / 180 / 2"},
+    "two_mirrors": {
+        "double": "sp.pi * P['turn'] / 180",
+        "order": "sp.pi - sp.pi * P['turn'] / 180 / 2",
+    },
 }

@@ -1,12 +1,12 @@
 r"""Exercises of chapter 3 (§0.1.3 exponential coordinates)."""
 
-from course_lib.exercises._model import Exercise, Expr, Value
+from course_lib.exercises._model import Exercise, Expr, Value, Variants
 from course_lib.symbolic import W, omega, t, theta, u
 
 CHAPTER = 3
 SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
-    "from course_lib.exercises import W, a, check, hat, omega, t, theta, u, x_0"
+    "from course_lib.exercises import W, a, check, hat, omega, parameters, t, theta, u, x_0"
 )
 
 _W = tuple(omega)
@@ -20,16 +20,18 @@ EXERCISES = [
         title="The scalar ODE from two measurements",
         statement=r"""
 A quantity obeys $\dot x(t) = a\,x(t)$ with an unknown constant $a$ (equation (95)). It is
-measured twice: $x(1) = 3$ and $x(3) = 12$. Using the solution (106), find $a$ and the initial
-value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
+measured twice: $x(<<t1>>) = <<x1>>$ and $x(<<t2>>) = <<x2>>$. Using the solution (106), find
+$a$ and the initial value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
 """,
         answer=Value(shape=(2,)),
         tip="Every solution is x(t) = e^{at} x(0); divide the two measurements to get rid of x(0).",
         mistakes={
-            "interval": "x(3)/x(1) = e^{a(3 − 1)}: the two measurements are 2 time units apart, "
-            "not 3.",
-            "at_zero": "x(1) = 3 is measured at t = 1, not at t = 0: x(0) = x(1) e^{−a}.",
+            "interval": "x(<<t2>>)/x(<<t1>>) = e^{a(<<t2>> − <<t1>>)}: the two measurements "
+            "are <<gap>> time units apart, not <<t2>>.",
+            "at_zero": "x(<<t1>>) = <<x1>> is measured at t = <<t1>>, not at t = 0: "
+            "x(0) = x(<<t1>>) e^{−<<t1>>a}.",
         },
+        variants=Variants("ch03_growth", {"t1": 1, "x1": 3, "t2": 3, "x2": 12, "gap": 2}),
     ),
     Exercise(
         name="pendulum_speed",
@@ -38,22 +40,23 @@ value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
         level="warm-up",
         title="The speed of a pendulum",
         statement=r"""
-A pendulum of length $r = 2$ m swings with the angle $\theta(t) = \frac{\pi}{6}\cos 3t$
+A pendulum of length $r = <<r>>$ m swings with the angle $\theta(t) = \frac{\pi}{<<n>>}\cos <<k>>t$
 (radians, $t$ in seconds). Using $\omega = \dot\theta$ (117) and $\lVert v\rVert = |r\omega|$
-(118), find the speed of its tip at $t = \pi/6$ s, in m/s. Give a number.
+(118), find the speed of its tip at $t = \pi/<<q>>$ s, in m/s. Give a number.
 """,
         answer=Value(shape=()),
-        tip="Differentiate θ(t) (chain rule: the 3 comes out), then evaluate at t = π/6.",
+        tip="Differentiate θ(t) (chain rule: the <<k>> comes out), then evaluate at t = π/<<q>>.",
         mistakes={
-            "angle": "0 is r θ(t) at t = π/6 (the pendulum passes the bottom, θ = 0): a "
-            "length, not a speed, and the speed is largest there; the speed uses the angular "
-            "rate θ̇ (equation (117)).",
+            "angle": "that is r θ(t) at t = π/<<q>>, the arc length from the bottom: a length, "
+            "not a speed; the speed uses the angular rate θ̇ (equation (117)).",
             "no_length": "that is the angular speed |θ̇| (rad/s); the tip moves with the speed "
-            "|r θ̇| (equation (118)), and r = 2 m.",
-            "no_chain": "the chain rule: d/dt cos 3t = −3 sin 3t, so θ̇ has a factor 3.",
+            "|r θ̇| (equation (118)), and r = <<r>> m.",
+            "no_chain": "the chain rule: d/dt cos <<k>>t = −<<k>> sin <<k>>t, so θ̇ has a factor "
+            "<<k>>.",
             "signed": "that is the velocity r θ̇ with its sign; a speed is a length, "
             "‖v‖ = |r ω| (equation (118)), never negative.",
         },
+        variants=Variants("ch03_pendulum", {"r": 2, "n": 6, "k": 3, "q": 6}),
     ),
     Exercise(
         name="hat_fifth",
@@ -122,7 +125,7 @@ $\hat\omega\, e^{\hat\omega\theta}$. Give a matrix expression in `W` and `theta`
         statement=r"""
 The solution of $\dot x = A x$ with $A = \begin{pmatrix} 0 & -a \\ a & 0 \end{pmatrix}$ and
 $x(0) = (x_0, 0)$ (the two-dimensional case of equation (121)) passes through the point
-$(0, 2)$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then find the
+$<<point>>$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then find the
 smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
         answer=Value(shape=(2,)),
@@ -136,6 +139,7 @@ smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$
             "degrees": "a is a rate in radians per unit time, as everywhere in the notes: give "
             "it in radians, not degrees.",
         },
+        variants=Variants("ch03_planar", {"point": [0, 2]}),
     ),
     Exercise(
         name="exp_general_axis",

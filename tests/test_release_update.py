@@ -73,9 +73,14 @@ def _stub_index(nb):
 
 def _student_solves_and_reruns(nb):
     i = _stub_index(nb)
-    prefill = nb.cells[i].source.splitlines()[0]  # answer_x = None
+    lines = nb.cells[
+        i
+    ].source.splitlines()  # [P = parameters(...) (with variants),] answer_x = None
+    numbers = lines[:1] if lines[0].startswith("P = parameters(") else []
+    prefill = lines[len(numbers)]
     assert prefill.endswith(" = None"), prefill
-    nb.cells[i].source = prefill + "\n" + prefill.replace("None", "[1, 2, 3]  # MINE")
+    mine = prefill.replace("None", "[1, 2, 3]  # MINE")
+    nb.cells[i].source = "\n".join([*numbers, prefill, mine])
     for cell in nb.cells:
         if cell.cell_type == "code" and cell.execution_count:
             cell.execution_count += 100

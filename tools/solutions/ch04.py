@@ -27,9 +27,9 @@ turns = []  # R_x, R_y or R_z of the notes, for each of the three turns
 for k in (1, 2, 3):
     c, s = np.cos(np.radians(P[f"a{k}"])), np.sin(np.radians(P[f"a{k}"]))
     i, j = [(1, 2), (2, 0), (0, 1)]["xyz".index(P[f"axis{k}"])]  # the plane it turns
-    M = np.eye(3)
-    M[i, i], M[i, j], M[j, i], M[j, j] = c, -s, s, c
-    turns.append(M)
+    turn_k = np.eye(3)
+    turn_k[i, i], turn_k[i, j], turn_k[j, i], turn_k[j, j] = c, -s, s, c
+    turns.append(turn_k)
 R1, R2, R3 = turns
 R = R1  # about a world axis, from R = I
 R = R @ R2  # about the camera's own axis: from the right

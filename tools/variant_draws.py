@@ -14,6 +14,7 @@ and tests/test_variant_draws.py checks 1,000 seeds per key.
 from __future__ import annotations
 
 import importlib.util
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +28,9 @@ MAX_TRIES = 200
 def _collect():
     """Every chapter's ``DRAWS`` (``tools/draws/chNN.py``), checked for clashing keys."""
     out = {}
+    here = str(Path(__file__).parent)
+    if here not in sys.path:  # the chapters import draws.common
+        sys.path.insert(0, here)
     for path in sorted(Path(__file__).with_name("draws").glob("ch[0-9][0-9].py")):
         spec = importlib.util.spec_from_file_location(f"_draws_{path.stem}", path)
         module = importlib.util.module_from_spec(spec)

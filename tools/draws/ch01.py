@@ -2,6 +2,8 @@
 
 import numpy as np
 
+from draws.common import apart
+
 #: Rotations with rational entries (columns of integer length n): a frame whose unit axes a
 #: first-year writes exactly, none along a coordinate axis.
 _RATIONAL = [
@@ -9,17 +11,6 @@ _RATIONAL = [
     (np.array([[2, 3, 6], [3, -6, 2], [6, 2, -3]]), 7),
     (np.array([[1, 4, 8], [4, 7, -4], [8, -4, 1]]), 9),
 ]
-
-
-def _apart(exercise, values, gap=0.01):
-    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
-    names = list(values)
-    return [
-        f"{exercise}: {a} and {b} are too close"
-        for i, a in enumerate(names)
-        for b in names[i + 1 :]
-        if np.abs(np.ravel(values[a]) - np.ravel(values[b])).max() < gap
-    ]
 
 
 def _rational_rotation(rng, family=None):
@@ -51,7 +42,7 @@ def _frame_problems(p):
         out.append("p − o along a coordinate axis, or o the origin: mistakes too easy to miss")
     values = {"answer": E.T @ po, "weights": E @ po, "no_origin": E.T @ np.array(p["p"]),
               "unnormalized": D.T @ po}  # fmt: skip
-    return out + _apart("coords_by_projection", values)
+    return out + apart("coords_by_projection", values)
 
 
 def _lengths(rng):
@@ -77,7 +68,7 @@ def _lengths_problems(p):
               "x_and_y": np.arccos(xy / (a * b)), "reversed": np.arccos(-cos)}  # fmt: skip
     if abs(xy / (a * b)) > 0.95:
         out.append("x and y nearly parallel")
-    return out + _apart("angle_from_lengths", values)
+    return out + apart("angle_from_lengths", values)
 
 
 def _motion(rng):
@@ -118,7 +109,7 @@ def _motion_problems(p):
               "mirror": np.column_stack([gu, gv, -np.cross(gu, gv)]) @ np.linalg.inv(F),
               "points": np.column_stack([ga, gb, gc]) @ np.linalg.inv(np.column_stack([a, b, c])),
               "columns": np.column_stack([gu, gv, np.cross(gu, gv)])}  # fmt: skip
-    return out + _apart("motion_from_points", values)
+    return out + apart("motion_from_points", values)
 
 
 DRAWS = {

@@ -5,31 +5,14 @@ from fractions import Fraction
 
 import numpy as np
 
+from draws.common import apart, signed_permutation
+
 _THIRDS = np.array([[1, 2, 2], [2, 1, -2], [2, -2, 1]])  # 3 R: a rotation with entries k/3
 _MISSING = [(0, 2), (1, 1), (2, 0)]  # where a, b and c stand
 
 
-def _apart(exercise, values, gap=0.01):
-    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
-    names = list(values)
-    return [
-        f"{exercise}: {a} and {b} are too close"
-        for i, a in enumerate(names)
-        for b in names[i + 1 :]
-        if np.abs(np.ravel(values[a]) - np.ravel(values[b])).max() < gap
-    ]
-
-
-def _signed_permutation(rng):
-    while True:
-        R = np.zeros((3, 3), dtype=int)
-        R[rng.permutation(3), np.arange(3)] = rng.choice([-1, 1], size=3)
-        if round(np.linalg.det(R)) == 1 and not np.array_equal(R, np.eye(3)):
-            return R
-
-
 def _frame(rng):
-    R = _signed_permutation(rng)
+    R = signed_permutation(rng)
     v = rng.choice([-4, -3, -2, -1, 1, 2, 3, 4], size=3, replace=False)
     return {"x_ab": R[:, 0].tolist(), "y_ab": R[:, 1].tolist(), "v_a": v.tolist()}
 
@@ -42,7 +25,7 @@ def _frame_problems(p):
         out.append("not two orthonormal axes, or v_a without three distinct magnitudes")
     left = np.column_stack([x, y, -np.cross(x, y)])
     values = {"answer": R.T @ v, "direction": R @ v, "left_handed": left.T @ v}
-    return out + _apart("vb_from_va", values)
+    return out + apart("vb_from_va", values)
 
 
 def _missing(rng):
@@ -74,7 +57,7 @@ def _missing_problems(p):
     if len(found) != 1:
         return [f"{len(found)} completions make it a rotation: the answer must be unique"]
     abc = np.array(found[0])
-    return _apart("complete_rotation", {"answer": abc, "abs": np.abs(abc)})
+    return apart("complete_rotation", {"answer": abc, "abs": np.abs(abc)})
 
 
 def _mirrors(rng):
@@ -85,7 +68,7 @@ def _mirrors_problems(p):
     theta = np.radians(p["turn"])
     out = [] if 20 <= p["turn"] <= 170 else ["the turn is near 0 or 180°"]
     values = {"answer": theta / 2, "double": theta, "order": np.pi - theta / 2}
-    return out + _apart("two_mirrors", values)
+    return out + apart("two_mirrors", values)
 
 
 DRAWS = {

@@ -2,16 +2,7 @@
 
 import numpy as np
 
-
-def _apart(exercise, values, gap=0.01):
-    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
-    names = list(values)
-    return [
-        f"{exercise}: {a} and {b} are too close"
-        for i, a in enumerate(names)
-        for b in names[i + 1 :]
-        if np.abs(np.ravel(values[a]) - np.ravel(values[b])).max() < gap
-    ]
+from draws.common import apart
 
 
 def _growth(rng):
@@ -30,7 +21,7 @@ def _growth_problems(p):
     wrong_a = np.log(x2 / x1) / t2
     values = {"answer": [a, x0], "interval": [wrong_a, x1 * (x2 / x1) ** (-t1 / t2)],
               "at_zero": [a, x1]}  # fmt: skip
-    return out + _apart("ode_shifted", values)
+    return out + apart("ode_shifted", values)
 
 
 def _pendulum(rng):
@@ -46,7 +37,7 @@ def _pendulum_problems(p):
     values = {"answer": abs(r * rate), "angle": r * np.pi / n * np.cos(k * t),
               "no_length": abs(rate), "no_chain": abs(r * rate / k),
               "signed": r * rate}  # fmt: skip
-    return out + _apart("pendulum_speed", values)
+    return out + apart("pendulum_speed", values)
 
 
 #: Points (p1, p2) at the angles π/4, π/2, ... 7π/4 with exact coordinates.
@@ -66,7 +57,7 @@ def _planar_problems(p):
     a, x0 = (phi, rho) if phi <= np.pi else (phi - np.pi, -rho)
     values = {"answer": [a, x0], "direction": [a, -x0], "larger": [a + np.pi, -x0],
               "next_turn": [a + 2 * np.pi, x0], "degrees": [np.degrees(a), x0]}  # fmt: skip
-    return _apart("planar_ode", values)
+    return apart("planar_ode", values)
 
 
 DRAWS = {

@@ -2,20 +2,13 @@
 
 import numpy as np
 
-
-def _signed_permutation(rng):
-    """A rotation whose columns are signed coordinate axes (one of the 24), not the identity."""
-    while True:
-        R = np.zeros((3, 3), dtype=int)
-        R[rng.permutation(3), np.arange(3)] = rng.choice([-1, 1], size=3)
-        if round(np.linalg.det(R)) == 1 and not np.array_equal(R, np.eye(3)):
-            return R
+from draws.common import apart, signed_permutation
 
 
 def _frames(rng):
     """Frames B in A and C in B, axes along signed coordinate axes (the warm-up's point: the
     axes read off as columns), and a vector of small distinct non-zero integers in C."""
-    R_ab, R_bc = _signed_permutation(rng), _signed_permutation(rng)
+    R_ab, R_bc = signed_permutation(rng), signed_permutation(rng)
     v_c = rng.choice([-4, -3, -2, -1, 1, 2, 3, 4], size=3, replace=False)
     names = ("x", "y", "z")
     out = {f"{n}_ab": R_ab[:, i].tolist() for i, n in enumerate(names)}
@@ -163,19 +156,8 @@ def _axis_problems(p):
     if np.abs(w).min() < 0.05:
         out.append("the axis lies along a coordinate plane or axis")
     values = {"answer": w, "unnormalized": 2 * sin * w, "no_two": 2 * w}
-    out += _apart("axis_of_rotation", values)
+    out += apart("axis_of_rotation", values)
     return out
-
-
-def _apart(exercise, values, gap=0.01):
-    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
-    names = list(values)
-    return [
-        f"{exercise}: {a} and {b} are too close"
-        for i, a in enumerate(names)
-        for b in names[i + 1 :]
-        if np.abs(np.asarray(values[a]) - np.asarray(values[b])).max() < gap
-    ]
 
 
 def _half_turns(rng):
@@ -201,7 +183,7 @@ def _half_turns_problems(p):
     values = {"answer": angle * axis, "order": -angle * axis,
               "long_way": (angle - 2 * np.pi) * axis, "single_angle": angle / 2 * axis,
               "unit_axis": axis, "sum": np.pi * (u + v)}  # fmt: skip
-    return out + _apart("two_half_turns", values)
+    return out + apart("two_half_turns", values)
 
 
 DRAWS = {

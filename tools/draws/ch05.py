@@ -3,6 +3,7 @@
 import numpy as np
 
 from course_lib import quaternion
+from draws.common import apart
 
 #: Directions of integer length, no entry 0 (Pythagorean quadruples): axes along no coordinate
 #: axis or plane, whose unit vector a first-year writes exactly.
@@ -10,17 +11,6 @@ _DIRECTIONS = [(1, 2, 2), (2, 3, 6), (1, 4, 8), (4, 4, 7), (2, 6, 9), (6, 6, 7),
 #: Unit pairs (c, s) with two or three decimals: c² + s² = 1 exactly.
 _PAIRS = [(0.6, 0.8), (0.8, 0.6), (0.28, 0.96), (0.96, 0.28), (0.352, 0.936), (0.936, 0.352)]
 _AXES = {"x": [1, 0, 0], "y": [0, 1, 0], "z": [0, 0, 1]}
-
-
-def _apart(exercise, values, gap=0.01):
-    """Pairs of the answer and the known mistakes that are not at least ``gap`` apart."""
-    names = list(values)
-    return [
-        f"{exercise}: {a} and {b} are too close"
-        for i, a in enumerate(names)
-        for b in names[i + 1 :]
-        if np.abs(np.ravel(values[a]) - np.ravel(values[b])).max() < gap
-    ]
 
 
 def _turn(rng):
@@ -39,7 +29,7 @@ def _turn_problems(p):
     values = {"answer": q, "full_angle": np.r_[np.cos(2 * half), np.sin(2 * half) * axis],
               "not_unit": np.r_[np.cos(half), np.sin(half) * d], "scalar_last": np.r_[q[1:], q[0]],
               "negated": -q}  # fmt: skip
-    return out + _apart("quaternion_of_turn", values)
+    return out + apart("quaternion_of_turn", values)
 
 
 def _ros(rng):
@@ -58,7 +48,7 @@ def _ros_problems(p):
         out.append("the statement's axis is not the quaternion's (or the angle is not in [0, π])")
     angle = 2 * np.arctan2(np.linalg.norm(v), p["w"])
     values = {"answer": angle, "scalar_first": 2 * np.arccos(p["x"]), "half": angle / 2}
-    return out + _apart("angle_from_ros", values)
+    return out + apart("angle_from_ros", values)
 
 
 def _two_turns(rng):
@@ -75,7 +65,7 @@ def _two_turns_problems(p):
     if q[0] < 0.05:
         out.append("the product's w is not clearly positive")
     values = {"answer": q, "order": quaternion.multiply(q_1, q_2), "negated": -q}
-    return out + _apart("compose_quaternions", values)
+    return out + apart("compose_quaternions", values)
 
 
 def _gimbal(rng):
@@ -97,7 +87,7 @@ def _gimbal_problems(p):
     wrong = np.cross(roll_col, [0, np.cos(phi), np.sin(phi)])
     values = {"answer": n, "world_frame": [1, 0, 0], "no_transpose": wrong / np.linalg.norm(wrong),
               "parallel_columns": [0, 0, 0], "sign": -n}  # fmt: skip
-    return out + _apart("unreachable_omega", values)
+    return out + apart("unreachable_omega", values)
 
 
 def _unit_quaternion(rng):
@@ -126,7 +116,7 @@ def _two_sources_problems(p):
         out.append("the two orientations are nearly the same")
     values = {"answer": 2 * np.arccos(abs(dot)), "long_way": 2 * np.arccos(np.clip(dot, -1, 1)),
               "scalar_last": 2 * np.arccos(abs(q0 @ np.r_[q1[1:], q1[0]]))}  # fmt: skip
-    return out + _apart("angle_between_quaternions", values)
+    return out + apart("angle_between_quaternions", values)
 
 
 DRAWS = {

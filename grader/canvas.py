@@ -16,6 +16,10 @@ student's e-mail, and the roster's own identity columns and assignment column na
 (``ps01 (12345)``) are used. Without it, ``ID`` is nbgrader's ``lms_user_id`` and ``SIS User
 ID`` the nbgrader id.
 
+Names, ids and sections come from students and the roster: a cell that a spreadsheet would read
+as a formula (``=``, ``+``, ``-``, ``@`` ...) is written with a leading ``'``
+(:mod:`grader.csv_safe`); Canvas matches students by ``ID``, which is a number.
+
 Nothing is silently zero: a student of the roster or the gradebook with no submission of an
 assignment gets a **blank** cell and is listed as missing; a graded nbgrader student that no
 roster row matches is left out of the CSV and listed as unknown. The list goes to stderr and
@@ -31,6 +35,8 @@ import os
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
+
+from grader.csv_safe import write_rows
 
 __all__ = ["Export", "export", "read_roster", "write_csv", "IDENTITY"]
 
@@ -147,12 +153,9 @@ def export(course, assignments=None, roster=None):
 
 
 def write_csv(result, path):
-    """Write the CSV (UTF-8, header then ``Points Possible`` then one row per student)."""
-    with open(path, "w", newline="", encoding="utf-8") as f:
-        writer = csv.writer(f)
-        writer.writerow(result.header)
-        writer.writerows(result.rows)
-    return Path(path)
+    """Write the CSV (UTF-8, header then ``Points Possible`` then one row per student); a cell
+    that a spreadsheet would read as a formula is neutralised (:mod:`grader.csv_safe`)."""
+    return write_rows(path, [result.header, *result.rows])
 
 
 def main(argv=None):

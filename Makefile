@@ -101,6 +101,7 @@ student: $(STAMP)
 # Speed against the reference (scipy) and of the exercise checks: CPU time, best of N, printed.
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
+	$(BIN)/python benchmarks/bench_orientation.py
 	$(BIN)/python benchmarks/bench_exercises.py
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources

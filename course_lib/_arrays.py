@@ -121,6 +121,44 @@ def as_float_array(x, name):
     return np.asarray(arr, dtype=np.float64)
 
 
+_NUMBER = (float, int)
+
+
+def small_floats(x, n):
+    """One finite vector of ``n`` entries as a tuple of Python floats, else None.
+
+    The single-call path of the public functions: ``x`` is a float64 array of shape (n,) or a
+    list or tuple of n ints and floats, all finite. Anything else (a batch, another dtype, NaN,
+    an int too large for a float) gives None, and the caller takes its validating batch path,
+    which accepts or explains it.
+
+    >>> small_floats([1, 2.5, 3], 3)
+    (1.0, 2.5, 3.0)
+    >>> small_floats([1, float("nan"), 3], 3) is None, small_floats([[1, 2, 3]], 3) is None
+    (True, True)
+    """
+    if type(x) is np.ndarray:
+        if x.dtype is not _F64 or x.shape != (n,):
+            return None
+        out = tuple(x.tolist())
+    elif type(x) in (list, tuple) and len(x) == n and all(type(v) in _NUMBER for v in x):
+        try:
+            out = tuple(float(v) for v in x)
+        except OverflowError:  # an int beyond 1.8e308: the batch path says so
+            return None
+    else:
+        return None
+    for v in out:
+        if v - v != 0.0:  # NaN or infinity: the batch path explains
+            return None
+    return out
+
+
+def small_tol(tol):
+    """``tol`` when it is a float in [0, 1) (the single-call paths take it as it is), else None."""
+    return tol if type(tol) is float and 0.0 <= tol < 1.0 else None
+
+
 def require_finite(arr, name):
     """Raise ValueError if ``arr`` holds NaN or infinity, saying how many and where."""
     finite = np.isfinite(arr)

@@ -33,7 +33,7 @@ import math
 import numpy as np
 
 from . import quaternion
-from ._arrays import as_float_array, require_finite
+from ._arrays import as_float_array, require_finite, small_floats
 from .tolerance import TOL
 
 __all__ = ["to_matrix", "from_matrix"]
@@ -77,12 +77,46 @@ def _as_angle_triples(angles):
     return require_finite(arr, "angles")
 
 
-def _elementary(axis, angle):
-    """Quaternions (..., 4) of turns by ``angle`` about coordinate axis ``axis``."""
-    q = np.zeros(angle.shape + (4,))
-    q[..., 0] = np.cos(0.5 * angle)
-    q[..., 1 + axis] = np.sin(0.5 * angle)
+def _two_turns(i, a, j, b):
+    r"""Quaternions (..., 4) of the turn by ``a`` about axis ``i`` times the turn by ``b`` about
+    axis ``j`` (:math:`i \ne j`): Hamilton's product of :math:`(\cos\frac a2, \sin\frac a2 e_i)`
+    and :math:`(\cos\frac b2, \sin\frac b2 e_j)`, without the terms that are 0."""
+    ca, sa, cb, sb = np.cos(0.5 * a), np.sin(0.5 * a), np.cos(0.5 * b), np.sin(0.5 * b)
+    q = np.empty(ca.shape + (4,))
+    q[..., 0] = ca * cb
+    q[..., 1 + i] = sa * cb
+    q[..., 1 + j] = ca * sb
+    m = 3 - i - j  # e_i × e_j = ±e_m
+    q[..., 1 + m] = sa * sb if (j - i) % 3 == 1 else -(sa * sb)
     return q
+
+
+def _times_turn(q, k, c):
+    r"""Quaternions (..., 4): ``q`` times the turn by ``c`` about axis ``k``,
+    :math:`(w c' - v_k s',\ w s' e_k + c' v + s'\, v \times e_k)` with
+    :math:`c' = \cos\frac c2, s' = \sin\frac c2`."""
+    cc, sc = np.cos(0.5 * c), np.sin(0.5 * c)
+    a, b = (k + 1) % 3, (k + 2) % 3  # (v × e_k)_a = v_b, (v × e_k)_b = −v_a
+    w, va, vb, vk = q[..., 0], q[..., 1 + a], q[..., 1 + b], q[..., 1 + k]
+    out = np.empty(q.shape)
+    out[..., 0] = w * cc - vk * sc
+    out[..., 1 + k] = w * sc + cc * vk
+    out[..., 1 + a] = cc * va + sc * vb
+    out[..., 1 + b] = cc * vb - sc * va
+    return out
+
+
+def _to_matrix_one(angles, axes, extrinsic):
+    """to_matrix of one angle triple given as floats: the batch path's steps on floats."""
+    q = []
+    for angle, axis in zip(angles, axes):
+        turn = [math.cos(0.5 * angle), 0.0, 0.0, 0.0]
+        turn[1 + axis] = math.sin(0.5 * angle)
+        q.append(turn)
+    if extrinsic:
+        q.reverse()
+    product = quaternion._product_one(quaternion._product_one(q[0], q[1]), q[2])
+    return quaternion.to_matrix(list(product))
 
 
 def to_matrix(angles, seq):
@@ -121,12 +155,15 @@ def to_matrix(angles, seq):
     True
     """
     (i, j, k), extrinsic = _parse_seq(seq)
+    one = small_floats(angles, 3)
+    if one is not None:
+        return _to_matrix_one(one, (i, j, k), extrinsic)
     angles = _as_angle_triples(angles)
-    q = [_elementary(axis, angles[..., n]) for n, axis in enumerate((i, j, k))]
+    turns = [(axis, angles[..., n]) for n, axis in enumerate((i, j, k))]
     if extrinsic:
-        q.reverse()
-    product = quaternion._product(quaternion._product(q[0], q[1]), q[2])
-    return quaternion.to_matrix(product)
+        turns.reverse()
+    product = _times_turn(_two_turns(*turns[0], *turns[1]), *turns[2])
+    return quaternion._matrices(product)  # a product of unit quaternions: unit to rounding
 
 
 class _Arrays:

@@ -21,8 +21,20 @@ import math
 import numpy as np
 
 from . import so3
-from ._arrays import as_matrices, as_vectors, broadcast_batch, frobenius_norm, vector_norm
+from ._arrays import (
+    as_matrices,
+    as_vectors,
+    broadcast_batch,
+    frobenius_norm,
+    small_floats,
+    vector_norm,
+)
 from .tolerance import TOL, check_tol, fmt_residual, tol_label
+
+#: Below this largest |entry| of v_b, no sum of R_ab v_b can overflow float64 (3 × 1e307).
+_NO_OVERFLOW = 1e307
+#: Vectors per matrix product in change_frame (see _rotate_rows).
+_ROWS = 16384
 
 __all__ = [
     "is_orthonormal",
@@ -436,6 +448,43 @@ def rotation_from_axes(x_ab, y_ab, z_ab):
         ) from err
 
 
+def _change_frame_one(R_ab, v_b):
+    """change_frame of one float64 rotation and one vector, on floats; None to take the batch
+    path (anything else, not a rotation within TOL, or an overflow: it explains)."""
+    if type(R_ab) is not np.ndarray or R_ab.shape != (3, 3) or R_ab.dtype != np.float64:
+        return None
+    v = small_floats(v_b, 3)
+    if v is None:
+        return None
+    X = R_ab.ravel().tolist()
+    orth2, det = so3._residual_rows(X)
+    if not (orth2 <= TOL * TOL and abs(det - 1.0) <= TOL):  # NaN fails here too
+        return None
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = X
+    v0, v1, v2 = v
+    out = (r00 * v0 + r01 * v1 + r02 * v2, r10 * v0 + r11 * v1 + r12 * v2)
+    out += (r20 * v0 + r21 * v1 + r22 * v2,)
+    return np.array(out) if all(e - e == 0.0 for e in out) else None
+
+
+def _rotate_rows(R_ab, v_b):
+    """One rotation times many vectors, as matrix products of :data:`_ROWS` rows at a time: a
+    product that small runs on one thread (a multi-threaded BLAS on a busy machine spends more
+    CPU waiting than multiplying)."""
+    flat = v_b.reshape(-1, 3)
+    out = np.empty(flat.shape)
+    for start in range(0, flat.shape[0], _ROWS):
+        np.matmul(flat[start : start + _ROWS], R_ab.T, out=out[start : start + _ROWS])
+    return out.reshape(v_b.shape)
+
+
+def _product(R_ab, v_b):
+    """R_ab v_b over broadcast batches."""
+    if R_ab.ndim == 2:
+        return _rotate_rows(R_ab, v_b)
+    return (R_ab @ v_b[..., None])[..., 0]
+
+
 def change_frame(R_ab, v_b):
     r"""Rewrite a vector given in frame B in frame A coordinates (eq. 64).
 
@@ -470,11 +519,20 @@ def change_frame(R_ab, v_b):
     >>> np.allclose(v_a, [0, np.sqrt(2), 3])
     True
     """
+    one = _change_frame_one(R_ab, v_b)
+    if one is not None:
+        return one
     R_ab = so3.check_rotation(R_ab, name="R_ab")
+    if R_ab.ndim == 2 and type(v_b) is np.ndarray and v_b.dtype == np.float64 and v_b.size:
+        # one rotation, many vectors: within ±1e307 they are finite and nothing overflows
+        if v_b.shape[-1] == 3 and v_b.max() < _NO_OVERFLOW and v_b.min() > -_NO_OVERFLOW:
+            return _rotate_rows(R_ab, v_b)
     v_b = as_vectors(v_b, "v_b")
     broadcast_batch(("R_ab", R_ab, 2), ("v_b", v_b, 1))
-    with np.errstate(over="ignore", invalid="ignore"):
-        v_a = (R_ab @ v_b[..., None])[..., 0]
+    if np.abs(v_b).max(initial=0.0) < _NO_OVERFLOW:  # |(R v)_i| <= 3 max|v|: nothing overflows
+        return _product(R_ab, v_b)
+    with np.errstate(over="ignore", invalid="ignore"):  # numpy's matmul is slow under errstate
+        v_a = _product(R_ab, v_b)
     if not np.isfinite(v_a).all():
         raise ValueError(
             "R_ab v_b overflows float64: v_b is too long (a component of v_a would exceed 1.8e308)"

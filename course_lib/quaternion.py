@@ -30,6 +30,8 @@ from ._arrays import (
     as_unit_quaternions,
     as_vectors,
     broadcast_batch,
+    small_floats,
+    small_tol,
     vector_norm,
 )
 from .tolerance import TOL, check_tol
@@ -241,6 +243,49 @@ def from_matrix(R, tol=TOL):
     return out.reshape(R.shape[:-2] + (4,))
 
 
+def _unit_one(q, tol):
+    """One unit quaternion as four Python floats, or None (not one finite quaternion of norm 1
+    within ``tol``: the batch path accepts or explains it). The norm as :func:`vector_norm`."""
+    f = small_floats(q, 4)
+    if f is None or small_tol(tol) is None:
+        return None
+    big = max(abs(f[0]), abs(f[1]), abs(f[2]), abs(f[3]))
+    if not big > 0.0:
+        return None
+    a, b, c, d = f[0] / big, f[1] / big, f[2] / big, f[3] / big
+    norm = big * math.sqrt(a * a + b * b + c * c + d * d)
+    return f if abs(norm - 1.0) <= tol else None
+
+
+def _matrix_one(w, x, y, z):
+    """to_matrix of one quaternion given as four floats: the batch path's formulas, in order."""
+    n = math.sqrt(w * w + x * x + y * y + z * z)
+    w, x, y, z = w / n, x / n, y / n, z / n
+    ww, xx, yy, zz = w * w, x * x, y * y, z * z
+    x2, y2, z2 = x + x, y + y, z + z
+    xy, xz, yz = x * y2, x * z2, y * z2
+    wx, wy, wz = w * x2, w * y2, w * z2
+    entries = (
+        (ww + xx) - (yy + zz), xy - wz, xz + wy,
+        xy + wz, (ww + yy) - (xx + zz), yz - wx,
+        xz - wy, yz + wx, (ww + zz) - (xx + yy),
+    )  # fmt: skip
+    clipped = [1.0 if e > 1.0 else -1.0 if e < -1.0 else e for e in entries]  # as np.clip
+    return np.array(clipped).reshape(3, 3)
+
+
+def _product_one(p, q):
+    """Hamilton's product of two quaternions given as float tuples (the formulas of _product)."""
+    pw, px, py, pz = p
+    qw, qx, qy, qz = q
+    return (
+        pw * qw - px * qx - py * qy - pz * qz,
+        pw * qx + px * qw + py * qz - pz * qy,
+        pw * qy - px * qz + py * qw + pz * qx,
+        pw * qz + px * qy - py * qx + pz * qw,
+    )
+
+
 def to_matrix(q, tol=TOL):
     r"""The rotation matrix of unit quaternions :math:`q = (w, v)`.
 
@@ -269,19 +314,31 @@ def to_matrix(q, tol=TOL):
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
     """
-    q = as_unit_quaternions(q, "q", tol)
+    one = _unit_one(q, tol)
+    if one is not None:
+        return _matrix_one(*one)
+    return _matrices(as_unit_quaternions(q, "q", tol))
+
+
+def _matrices(q):
+    """to_matrix of a float array of quaternions (..., 4) of norm 1 to rounding, unchecked."""
     q = q / np.sqrt(np.sum(q * q, axis=-1, keepdims=True))
     w, x, y, z = np.moveaxis(q, -1, 0)
     ww, xx, yy, zz = w * w, x * x, y * y, z * z
     x2, y2, z2 = x + x, y + y, z + z
     xy, xz, yz = x * y2, x * z2, y * z2
     wx, wy, wz = w * x2, w * y2, w * z2
-    rows = (  # the diagonal as w² + x² − y² − z²: exactly 0 for q = (1, 0, 0, 1)/√2
-        ((ww + xx) - (yy + zz), xy - wz, xz + wy),
-        (xy + wz, (ww + yy) - (xx + zz), yz - wx),
-        (xz - wy, yz + wx, (ww + zz) - (xx + yy)),
-    )
-    R = np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    R = np.empty(w.shape + (3, 3))
+    # the diagonal as w² + x² − y² − z²: exactly 0 for q = (1, 0, 0, 1)/√2
+    np.subtract(ww + xx, yy + zz, out=R[..., 0, 0])
+    np.subtract(xy, wz, out=R[..., 0, 1])
+    np.add(xz, wy, out=R[..., 0, 2])
+    np.add(xy, wz, out=R[..., 1, 0])
+    np.subtract(ww + yy, xx + zz, out=R[..., 1, 1])
+    np.subtract(yz, wx, out=R[..., 1, 2])
+    np.subtract(xz, wy, out=R[..., 2, 0])
+    np.add(yz, wx, out=R[..., 2, 1])
+    np.subtract(ww + zz, xx + yy, out=R[..., 2, 2])
     return np.clip(R, -1.0, 1.0, out=R)  # rounding can pass ±1 (as in so3.exp); R's entries can't
 
 
@@ -327,6 +384,9 @@ def multiply(p, q, tol=TOL):
     >>> np.round(multiply(qz, qz), 12) + 0.0
     array([0., 0., 0., 1.])
     """
+    p1, q1 = _unit_one(p, tol), _unit_one(q, tol)
+    if p1 is not None and q1 is not None:
+        return np.array(_product_one(p1, q1))
     p = as_unit_quaternions(p, "p", tol)
     q = as_unit_quaternions(q, "q", tol)
     broadcast_batch(("p", p, 1), ("q", q, 1))
@@ -379,6 +439,9 @@ def rotate(q, v, tol=TOL):
     >>> np.round(rotate(q, [1, 0, 0]), 12) + 0.0
     array([0., 1., 0.])
     """
+    one, v1 = _unit_one(q, tol), small_floats(v, 3)
+    if one is not None and v1 is not None and max(map(abs, v1)) <= _HUGE:
+        return np.array(_rotate_one(one, v1))
     q = as_unit_quaternions(q, "q", tol)
     v = as_vectors(v, "v")
     broadcast_batch(("q", q, 1), ("v", v, 1))
@@ -399,6 +462,43 @@ def _rotate(q, v):
     t = np.cross(u, v)
     t += t
     return v + w * t + np.cross(u, t)
+
+
+def _rotate_one(q, v):
+    """_rotate of one quaternion and one vector given as float tuples (the same formulas)."""
+    w, ux, uy, uz = q
+    vx, vy, vz = v
+    tx, ty, tz = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
+    tx, ty, tz = tx + tx, ty + ty, tz + tz
+    return (
+        vx + w * tx + (uy * tz - uz * ty),
+        vy + w * ty + (uz * tx - ux * tz),
+        vz + w * tz + (ux * ty - uy * tx),
+    )
+
+
+def _norm_one(v):
+    """:func:`vector_norm` of one vector given as a float tuple (the same steps)."""
+    big = max(map(abs, v))
+    if not 0.0 < big < math.inf:
+        return big
+    return big * math.sqrt(sum((e / big) * (e / big) for e in v))
+
+
+def _slerp_one(q0, q1, t):
+    """slerp of two quaternions and one fraction given as floats (the batch path's formulas)."""
+    if sum(a * b for a, b in zip(q0, q1)) < 0.0:
+        q1 = tuple(-b for b in q1)
+    diff = _norm_one(tuple(b - a for a, b in zip(q0, q1)))
+    omega = 2.0 * math.atan2(diff, _norm_one(tuple(b + a for a, b in zip(q0, q1))))
+    if omega < _SLERP_LINEAR:
+        a, b = 1.0 - t, t
+    else:
+        sin_omega = math.sin(omega)
+        a, b = math.sin((1.0 - t) * omega) / sin_omega, math.sin(t * omega) / sin_omega
+    q = tuple(a * x + b * y for x, y in zip(q0, q1))
+    norm = _norm_one(q)
+    return np.array([x / norm for x in q])
 
 
 def slerp(q0, q1, t, tol=TOL):
@@ -436,6 +536,9 @@ def slerp(q0, q1, t, tol=TOL):
     >>> slerp([1, 0, 0, 0], [0, 0, 0, 1], 0.5)
     array([0.70710678, 0.        , 0.        , 0.70710678])
     """
+    p0, p1 = _unit_one(q0, tol), _unit_one(q1, tol)
+    if p0 is not None and p1 is not None and type(t) in (float, int) and abs(t) < 1e300:
+        return _slerp_one(p0, p1, float(t))
     q0 = as_unit_quaternions(q0, "q0", tol)
     q1 = as_unit_quaternions(q1, "q1", tol)
     t = as_angles(as_float_array(t, "t"), "t")

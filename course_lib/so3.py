@@ -37,6 +37,8 @@ from ._arrays import (
     as_vectors,
     broadcast_batch,
     frobenius_norm,
+    small_floats,
+    small_tol,
     vector_norm,
 )
 from .tolerance import TOL, check_tol, fmt_residual, tol_label
@@ -81,28 +83,6 @@ class AccuracyWarning(UserWarning):
     """A result is finite but rounding has made it less accurate than the tolerance policy."""
 
 
-def _three_floats(w):
-    """(x, y, z) as Python floats for one finite float64 3-vector or list of 3 numbers, else None.
-
-    The small-input path: a single call skips numpy's batch machinery (conversion, chunking)
-    but not the validation, which it does on three floats.
-    """
-    if type(w) is np.ndarray:
-        if w.dtype is not _F64 or w.shape != (3,):
-            return None
-        x, y, z = w.tolist()
-    elif type(w) in (list, tuple) and len(w) == 3:
-        x, y, z = w
-        if type(x) not in _NUMBER or type(y) not in _NUMBER or type(z) not in _NUMBER:
-            return None
-        x, y, z = float(x), float(y), float(z)  # huge ints raise OverflowError: see caller
-    else:
-        return None
-    if x - x != 0.0 or y - y != 0.0 or z - z != 0.0:  # NaN or infinity: the full path explains
-        return None
-    return x, y, z
-
-
 def hat(w):
     r"""The hat map (Definition 5): the skew-symmetric matrix of a 3-vector.
 
@@ -137,10 +117,7 @@ def hat(w):
     >>> np.allclose(hat([1, 2, 3]) @ v, np.cross([1, 2, 3], v))
     True
     """
-    try:
-        xyz = _three_floats(w)
-    except OverflowError:
-        xyz = None
+    xyz = small_floats(w, 3)
     if xyz is not None:
         x, y, z = xyz
         return np.array(((0.0, -z, y), (z, 0.0, -x), (-y, x, 0.0)))
@@ -323,21 +300,16 @@ def _exp_one(x, y, z):
         1.0 - (xx + yy),
     )
     if lam <= _NEAR_QUARTER:  # clipped to [−1, 1] as in _exp_rows, where rounding can pass ±1
-        entries = [min(max(e, -1.0), 1.0) for e in entries]
+        entries = [1.0 if e > 1.0 else -1.0 if e < -1.0 else e for e in entries]
     return np.array(entries).reshape(3, 3)
 
 
 def _exp_single(w, theta, tol):
     """The small-input path of exp: one vector (and one angle), or None to take the batch path."""
-    try:
-        xyz = _three_floats(w)
-    except OverflowError:
-        return None
-    if xyz is None:
+    xyz = small_floats(w, 3)
+    if xyz is None or small_tol(tol) is None:
         return None
     x, y, z = xyz
-    if type(tol) is not float or not 0.0 <= tol < 1.0:
-        return None
     if theta is None:
         return _exp_one(x, y, z)
     if type(theta) not in _NUMBER:

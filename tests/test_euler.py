@@ -498,3 +498,14 @@ def test_dtypes_layouts_and_empty_batches():
     assert euler.from_matrix(np.zeros((0, 3, 3)), "xyz").shape == (0, 3)
     assert euler.to_matrix(np.zeros((2, 0, 3)), "XYZ").shape == (2, 0, 3, 3)
     assert euler.from_matrix(np.broadcast_to(np.eye(3), (4, 2, 3, 3)), "zxz").shape == (4, 2, 3)
+
+
+@settings(max_examples=200)
+@given(st.tuples(*[st.floats(-10.0, 10.0)] * 3), st.sampled_from(SEQS))
+def test_single_call_to_matrix_equals_the_batch_path(angles, seq):
+    """Issue 36: one triple is computed on floats; it matches the batch path to an ulp or two
+    (math's sin and cos against numpy's) and scipy to rounding."""
+    one = euler.to_matrix(list(angles), seq)
+    batch = euler.to_matrix(np.array([angles]), seq)[0]
+    assert np.abs(one - batch).max() <= 4e-16
+    assert np.abs(one - Rotation.from_euler(seq, angles).as_matrix()).max() <= 2e-15

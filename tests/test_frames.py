@@ -404,3 +404,31 @@ def test_rotation_from_axes_refuses_bad_shapes():
         ValueError, match=r"do not broadcast: x_ab has shape \(2, 3\) .*y_ab has shape \(3, 3\)"
     ):
         rotation_from_axes(np.zeros((2, 3)), np.zeros((3, 3)), [0, 0, 1])
+
+
+def test_single_and_many_vector_paths_equal_the_batch_path():
+    """Issue 36: one rotation and one vector on floats, one rotation and many vectors as
+    chunked matrix products; both give what the broadcast product gives."""
+    rng = np.random.default_rng(36)
+    R = so3.random_rotations(1, seed=3)[0]
+    V = rng.standard_normal((40_000, 3)) * 10.0
+    many = change_frame(R, V)
+    batch = change_frame(np.broadcast_to(R, (len(V), 3, 3)), V)
+    assert np.abs(many - batch).max() <= 1e-14
+    for v in V[:50]:
+        assert np.abs(change_frame(R, v) - change_frame(R[None], v[None])[0]).max() <= 1e-14
+    assert change_frame(R, V.reshape(200, 200, 3)).shape == (200, 200, 3)
+
+
+@pytest.mark.parametrize(
+    ("R", "v", "message"),
+    [
+        (np.diag([1.0, 1.0, -1.0]), np.ones(3), "reflection"),
+        (np.eye(3), np.array([1.0, np.nan, 0.0]), "NaN"),
+        (so3.rot_z(np.pi / 4), np.array([[1.7e308, 1.7e308, 0.0]] * 3), "overflows"),
+        (np.eye(3), np.ones((5, 2)), "shape"),
+    ],
+)
+def test_bad_input_on_the_fast_paths_gets_the_full_message(R, v, message):
+    with pytest.raises(ValueError, match=message):
+        change_frame(R, v)

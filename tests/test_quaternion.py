@@ -726,3 +726,39 @@ def test_empty_batches_keep_their_shape():
     assert Q.slerp(np.zeros((0, 4)), [1, 0, 0, 0], 0.5).shape == (0, 4)
     assert Q.to_axis_angle(np.zeros((0, 4)))[1].shape == (0,)
     assert Q.from_axis_angle(np.zeros((0, 3)), 1.0).shape == (0, 4)
+
+
+# The single-call paths (issue 36: one call at most scipy's time) compute on Python floats; they
+# must give what the batch path gives for the same quaternion, and leave every error to it.
+
+
+@settings(max_examples=300)
+@given(quats, quats, vectors)
+def test_single_calls_equal_the_batch_path_bit_for_bit(p, q, v):
+    assert np.array_equal(Q.to_matrix(q), Q.to_matrix(q[None])[0])
+    assert np.array_equal(Q.multiply(p, q), Q.multiply(p[None], q[None])[0])
+    assert np.array_equal(Q.rotate(q, v), Q.rotate(q[None], v[None])[0])
+    assert np.array_equal(Q.to_matrix(list(q)), Q.to_matrix(q))
+
+
+@settings(max_examples=300)
+@given(quats, quats, st.floats(-2.0, 3.0))
+def test_single_slerp_equals_the_batch_path(p, q, t):
+    one, batch = Q.slerp(p, q, t), Q.slerp(p[None], q[None], np.array([t]))[0]
+    assert np.abs(one - batch).max() <= 4 * EPS  # math's sin and numpy's may differ by an ulp
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: Q.to_matrix([1.0, 1.0, 0.0, 0.0]), "must be a unit quaternion"),
+        (lambda: Q.to_matrix([1.0, float("nan"), 0.0, 0.0]), "NaN"),
+        (lambda: Q.multiply([1, 0, 0, 0], [2, 0, 0, 0]), "q must be a unit quaternion"),
+        (lambda: Q.rotate(Q.from_axis_angle([0, 0, 1], np.pi / 4), [1.7e308] * 3), "too long"),
+        (lambda: Q.slerp([1, 0, 0, 0], [0, 1, 0, 0], float("inf")), "t"),
+        (lambda: Q.to_matrix([1, 0, 0, 0], tol=-1.0), "tol"),
+    ],
+)
+def test_bad_single_calls_get_the_batch_paths_message(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()

@@ -157,7 +157,7 @@ class ConfinedExecute(Execute):
         self._start_cell(None)
         if nb.metadata.get(intake.NOTE):  # refused at intake: GuardCells gave every grade cell 0
             return nb, resources
-        self._deadline, self._over = time.monotonic() + self.notebook_budget, False
+        self._deadline, self._over = None, False  # the budget starts at the first cell
         try:
             nb, resources = super().preprocess(nb, resources, km=km)
             if not self._over:
@@ -184,7 +184,10 @@ class ConfinedExecute(Execute):
         return nb, resources
 
     async def async_execute_cell(self, cell, cell_index, execution_count=None, store_history=True):
-        if time.monotonic() > getattr(self, "_deadline", math.inf):
+        now = time.monotonic()
+        if getattr(self, "_deadline", None) is None:
+            self._deadline = now + self.notebook_budget
+        elif now > self._deadline:
             self._over = True  # past the notebook's budget: not run (preprocess gives it 0)
             return cell
         self._start_cell(cell_index)

@@ -242,3 +242,60 @@ def test_collect_copies_only_regular_files_inside_the_students_folder(tmp_path):
         [EXPECTED, "more.txt", "notes.txt", "sub"]
     )
     assert (dest / "sub" / "more.txt").read_text() == "also mine"
+
+
+def test_cells_past_the_notebooks_time_budget_are_not_run_and_get_0_regression_issue32():
+    """A notebook's run was bounded only per cell: 10,000 cells ran 308 s."""
+    import nbformat
+    from grading_helpers import TRUSTED_CONFIG
+
+    from course_lib.student import nbgrader_metadata
+    from grader import preprocessor as P
+
+    def grade_cell(gid, source):
+        cell = nbformat.v4.new_code_cell(source)
+        cell.metadata = nbgrader_metadata(gid, grade=True, locked=True, points=1)
+        return cell
+
+    cells = [grade_cell("a-check", "print('ran')"), nbformat.v4.new_code_cell("import time")]
+    cells += [nbformat.v4.new_code_cell("time.sleep(2.5)"), grade_cell("b-check", "print(1)")]
+    nb = nbformat.v4.new_notebook(cells=cells)
+    nb.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3",
+        "language": "python",
+    }
+    ex = P.ConfinedExecute(timeout=30, notebook_budget=2, config=TRUSTED_CONFIG)
+    nb, _ = ex.preprocess(nb, {"metadata": {"path": "/tmp"}})
+    assert [o.output_type for o in nb.cells[0].outputs] == ["stream"]  # before: kept
+    assert nb.cells[2].execution_count is not None  # started within the budget: ran
+    (note,) = nb.cells[3].outputs
+    assert "time budget of 2 s" in note.evalue and nb.cells[3].metadata[P.ZERO]
+
+
+@pytest.mark.parametrize(
+    ("solved", "blank", "said"),
+    [(13.0, 0.0, "the solved copy got 13 of 14"), (14.0, 2.0, "the blank copy got 2 of 14")],
+)
+def test_the_self_test_fails_the_build_unless_full_marks_and_0(
+    tmp_path, monkeypatch, solved, blank, said
+):
+    """setup.sh's last step: a broken image never records a 0 (nor full marks) for a student."""
+    course = tmp_path / "course"
+    for folder in ("source", "release"):
+        (course / folder / "ps01").mkdir(parents=True)
+        (course / folder / "ps01" / EXPECTED).write_bytes(NB)
+    monkeypatch.setattr(G, "assignment", lambda source=None: ("ps01", EXPECTED))
+    got = iter([solved, blank])
+
+    def fake_grade(top, course=None):
+        assert (Path(top) / "submission" / EXPECTED).read_bytes() == NB
+        score = next(got)
+        return {"score": score, "tests": [{"max_score": 14.0}], "output": ""}
+
+    monkeypatch.setattr(G, "grade", fake_grade)
+    with pytest.raises(G.GraderFault, match=said):
+        G.selftest(tmp_path)
+    monkeypatch.setenv(G.ROOT_ENV, str(tmp_path))
+    got = iter([solved, blank])
+    assert G.main(["selftest"]) == 1

@@ -215,15 +215,16 @@ def refused_notebook(note):
 
 
 def _folder_of(path, coursedir):
-    """The course folder (``submitted/`` or ``autograded/``) that holds ``path``."""
+    """``(the course folder that holds path, whether it is the students' submitted/)``:
+    ``submitted/`` or nbgrader's own ``autograded/`` (the second stage of autograde)."""
     path = os.path.abspath(path)
     if coursedir is not None:
         for name in (coursedir.submitted_directory, coursedir.autograded_directory):
             root = os.path.abspath(coursedir.format_path(name, ".", "."))
             if path.startswith(root.rstrip(os.sep) + os.sep):
-                return root
-        return None
-    return os.path.dirname(path)
+                return root, name == coursedir.submitted_directory
+        return None, True
+    return os.path.dirname(path), True
 
 
 def nbgrader_read(filename, coursedir, resources=None, log=None):
@@ -237,19 +238,22 @@ def nbgrader_read(filename, coursedir, resources=None, log=None):
     resources["metadata"] = meta
     meta["name"] = os.path.splitext(os.path.basename(filename))[0]
     meta["path"] = os.path.dirname(filename)
-    folder = _folder_of(filename, coursedir)
+    folder, students = _folder_of(filename, coursedir)
     try:
         if folder is None:
             raise Refused(f"{shown(filename)} is outside the course's submitted/ folder")
         data = read_inside(filename, folder)
         parse(data, os.path.basename(filename))
         try:
-            return nbformat.reads(data.decode("utf-8"), as_version=4), resources
+            nb = nbformat.reads(data.decode("utf-8"), as_version=4)
         except Exception as err:  # noqa: BLE001 - nbformat's own refusal of the JSON
             raise Refused(
                 f"{shown(os.path.basename(filename))} is not a notebook nbformat "
                 f"can read ({type(err).__name__})"
             ) from None
+        if students and nb.cells:  # the note of the intake's own placeholder (no cells) only
+            nb.metadata.pop(NOTE, None)
+        return nb, resources
     except (Refused, OSError) as err:
         note = f"0 points: {err}" if isinstance(err, Refused) else f"0 points: unreadable ({err})"
         if log is not None:

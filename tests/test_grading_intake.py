@@ -299,3 +299,18 @@ def test_the_self_test_fails_the_build_unless_full_marks_and_0(
     monkeypatch.setenv(G.ROOT_ENV, str(tmp_path))
     got = iter([solved, blank])
     assert G.main(["selftest"]) == 1
+
+
+def test_nbgrader_reads_through_the_intake_and_a_students_own_refusal_flag_is_dropped(sub):
+    """The refusal note lives in notebook metadata: a student who writes it into a notebook
+    with cells must not have the kernel skipped (it would only cost them points, but the note
+    shown must be the intake's)."""
+    nb = json.loads(NB)
+    nb["cells"] = [{"cell_type": "markdown", "id": "m", "metadata": {}, "source": "hi"}]
+    nb["metadata"][intake.NOTE] = "0 points: <b>fake</b>"
+    (sub / EXPECTED).write_text(json.dumps(nb))
+    got, resources = intake.nbgrader_read(str(sub / EXPECTED), None, None)
+    assert intake.NOTE not in got.metadata and resources["metadata"]["name"] == EXPECTED[:-6]
+    (sub / "link.ipynb").symlink_to(sub / EXPECTED)
+    got, _ = intake.nbgrader_read(str(sub / "link.ipynb"), None, None)
+    assert got.cells == [] and "symbolic link" in got.metadata[intake.NOTE]

@@ -314,3 +314,24 @@ def test_nbgrader_reads_through_the_intake_and_a_students_own_refusal_flag_is_dr
     (sub / "link.ipynb").symlink_to(sub / EXPECTED)
     got, _ = intake.nbgrader_read(str(sub / "link.ipynb"), None, None)
     assert got.cells == [] and "symbolic link" in got.metadata[intake.NOTE]
+
+
+def test_collect_refuses_a_student_folder_that_is_a_link(tmp_path, caplog):
+    """inbound/alice+ps01+... -> the instructor's source/ folder: nothing is collected."""
+    from nbgrader.auth import Authenticator
+    from nbgrader.coursedir import CourseDirectory
+
+    from grader.collect import SafeCollect
+
+    source = tmp_path / "source" / "ps01"
+    source.mkdir(parents=True)
+    (source / EXPECTED).write_bytes(NB)
+    link = tmp_path / "inbound" / "alice+ps01+2026"
+    link.parent.mkdir()
+    link.symlink_to(source)
+    collect = SafeCollect(
+        coursedir=CourseDirectory(root=str(tmp_path)), authenticator=Authenticator()
+    )
+    with caplog.at_level(logging.WARNING):
+        collect.do_copy(str(link), str(tmp_path / "submitted" / "alice" / "ps01"))
+    assert not (tmp_path / "submitted").exists() and "not collected" in caplog.text

@@ -10,6 +10,7 @@ STAMP  := $(VENV)/.course-installed
 .PHONY: lab test e2e student bench lint clean test-fast notebooks exercises site site-test
 
 $(STAMP): environment.txt environment-student.txt pyproject.toml
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 11))' || { echo "make: $(PYTHON) is $$($(PYTHON) -V 2>&1); this environment (nbgrader 0.9.6) needs Python 3.11-3.13: install one, then e.g. make PYTHON=python3.11 (README, What they need)" >&2; exit 1; }
 	rm -rf $(VENV)
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip

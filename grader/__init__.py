@@ -4,6 +4,8 @@
 - :mod:`grader.verify`: re-checks it against ``tools/solutions`` at fresh random points;
 - :mod:`grader.preprocessor`: the nbgrader preprocessors that plug both into ``autograde``;
 - :mod:`grader.sandbox`: the confined kernel that runs a submission;
+- :mod:`grader.intake`: what is read of a submission (regular files inside it, 20 MB at most),
+  :mod:`grader.collect`: ``nbgrader collect`` through it;
 - :mod:`grader.course`: ``make course COURSE=DIR``, an nbgrader course directory.
 
 This package lives in the instructor's repository only: it is not part of the wheel, and the

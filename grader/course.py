@@ -41,6 +41,7 @@ __all__ = ["problem_sets", "config_text", "write_course", "hidden_folders", "wri
 
 KERNELSPEC = {"name": "python3", "display_name": "Python 3 (ipykernel)", "language": "python"}
 TIMEOUT = 60
+BUDGET = 300  # seconds for a notebook's whole run (grader.preprocessor.ConfinedExecute)
 RECORD = "record("  # what every check cell calls (course_lib.record)
 #: MathJax 3 as the site build installs it from npm (``make site``).
 MATHJAX = Path("build") / "site-deps" / "node_modules" / "mathjax" / "es5" / "tex-svg.js"
@@ -128,6 +129,11 @@ c.Autograde.autograde_preprocessors = [
     CheckCellMetadata,
 ]
 c.Execute.timeout = {timeout}  # seconds per cell
+# A notebook's whole run: a cell not started after this many seconds is not run (0, a note).
+c.ConfinedExecute.notebook_budget = {budget}
+# Intake (grader/intake.py): only regular files inside a submission are read, at most 20 MB;
+# autograde reads submitted/ through ConfinedExporter, collect copies from the exchange so.
+c.ExchangeFactory.collect = "grader.collect.SafeCollect"
 c.ConfinedKernelManager.hide = {hide!r}
 # Without bubblewrap, autograde refuses to run students' code (it would run as you, with the
 # solutions and the gradebook in reach). Only for work you trust (docs/grading.md):
@@ -199,6 +205,7 @@ def config_text(course, root=ROOT, timeout=TIMEOUT):
         repo=str(root.resolve()),
         root=str(course),
         timeout=int(timeout),
+        budget=BUDGET,
         hide=hidden_folders(course, root),
     )
 

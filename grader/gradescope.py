@@ -10,8 +10,9 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
   them into ``/opt/rotations-venv`` (outside ``/autograder``);
 - ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
   ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
-- **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` (the reference solutions
-  that :mod:`grader.verify` re-checks every recorded answer against, at fresh points) and
+- **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` of this set's chapter only
+  (the reference solutions that :mod:`grader.verify` re-checks every recorded answer against,
+  at fresh points; never another chapter's) and
   ``problem_sets/psNN_*.ipynb`` (the instructor's solved copy, from which nbgrader builds its
   gradebook and the released cells it puts back).
 
@@ -22,8 +23,10 @@ zip to students; what they see is ``results.json``, which holds only points, the
 hints and the grader's notes (never cell outputs or the solutions); the tests run the leak
 gate on the results of the solved copy and of attacks. The risk that stays: the solutions are
 in the grading container, next to the student's code; bubblewrap's confined kernel cannot see
-them. Without bubblewrap the autograder refuses to run the notebook (``--unconfined`` makes it
-run it anyway, with the solutions in reach: docs/grading.md).
+them. Without bubblewrap the autograder refuses to run the notebook and exits 1
+(``--unconfined`` makes it run it anyway, with the solutions in reach: docs/grading.md).
+setup.sh brings a Python the pins install on (:data:`MIN_PYTHON`; Ubuntu 22.04's universe
+``python3.11``) and ends with ``gradescope_run.py selftest``.
 """
 
 from __future__ import annotations
@@ -39,27 +42,45 @@ ROOT = Path(__file__).resolve().parents[1]
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-__all__ = ["members", "build_zip", "leak_check", "SECRET", "SETUP", "RUN"]
+__all__ = ["members", "build_zip", "leak_check", "SECRET", "SETUP", "RUN", "MIN_PYTHON"]
 
 VENV = "/opt/rotations-venv"
 #: Zip members that hold the solutions on purpose (the leak gate does not scan them).
 SECRET = re.compile(r"^(tools/solutions/[^/]+\.py|problem_sets/ps\d\d_[^/]+\.ipynb)$")
 
+#: The oldest Python the grader's pins install on (nbgrader 0.9.6: Requires-Python >=3.11).
+MIN_PYTHON = (3, 11)
+_MIN = ".".join(map(str, MIN_PYTHON))
+
 SETUP = f"""\
 #!/usr/bin/env bash
-# Gradescope runs this once, as root, when it builds the autograder's image (Ubuntu).
+# Gradescope runs this once, as root, when it builds the autograder's image (Ubuntu 22.04 or
+# 24.04). Any failure stops the build with a message: a broken image never grades a student.
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
+fail() {{ echo "setup.sh: $*" >&2; exit 1; }}
 apt-get update -q
 apt-get install -y -q bubblewrap python3 python3-venv python3-pip
-python3 -m venv {VENV}
+PY=python3
+if ! python3 -c 'import sys; sys.exit(sys.version_info < {MIN_PYTHON})'; then
+    # Ubuntu 22.04: python3 is 3.10, nbgrader 0.9.6 needs {_MIN}+: universe's python3.11
+    apt-get install -y -q python3.11 python3.11-venv || fail "python3 is $(python3 -V 2>&1) \\
+and python3.11 could not be installed: the grader needs Python {_MIN}+ (or Ubuntu 24.04)"
+    PY=python3.11
+fi
+"$PY" -c 'import sys; sys.exit(sys.version_info < {MIN_PYTHON})' \\
+    || fail "$("$PY" -V 2>&1) is older than {_MIN}"
+"$PY" -m venv {VENV} || fail "$PY -m venv failed (is the venv package installed?)"
 {VENV}/bin/python -m pip install --quiet --upgrade pip
 {VENV}/bin/python -m pip install --quiet -r /autograder/source/environment-student.txt \\
-    -r /autograder/source/requirements-grader.txt
+    -r /autograder/source/requirements-grader.txt || fail "the pinned packages did not install"
 # course_lib as a copy in the venv: the kernel sees the venv, never /autograder/source
 {VENV}/bin/python -m pip install --quiet --no-deps /autograder/source
 chmod 700 /autograder/source
 {VENV}/bin/python /autograder/source/grader/gradescope_run.py prepare
+# grade the solved copy (full marks) and a blank copy (0) as students will be graded
+{VENV}/bin/python /autograder/source/grader/gradescope_run.py selftest \\
+    || fail "the self-test failed (above): this image would not grade students right"
 """
 
 RUN = f"""\
@@ -104,8 +125,11 @@ def members(ps, root=ROOT, unconfined=False):
                 out[path.relative_to(root).as_posix()] = path.read_bytes()
     for name in ("sync_exercises.py", "exercise_fingerprints.py"):
         out[f"tools/{name}"] = (root / "tools" / name).read_bytes()
-    for path in sorted((root / "tools" / "solutions").glob("*.py")):
-        out[f"tools/solutions/{path.name}"] = path.read_bytes()
+    # only this set's chapter: the reference solutions import nothing (SOLUTIONS is text)
+    solutions = root / "tools" / "solutions" / f"ch{int(ps[2:]):02d}.py"
+    if not solutions.is_file():
+        raise ValueError(f"{ps}: no reference solutions {solutions.relative_to(root)}")
+    out[f"tools/solutions/{solutions.name}"] = solutions.read_bytes()
     out[f"problem_sets/{made[0].name}"] = made[0].read_bytes()
     if unconfined:
         out["UNCONFINED"] = b"students' code runs unconfined (docs/grading.md)\n"

@@ -3,26 +3,37 @@ autograde`` with the course's configuration, written as Gradescope's ``results.j
 
     python grader/gradescope_run.py prepare      # setup.sh, once per image
     python grader/gradescope_run.py grade        # run_autograder, once per submission
+    python grader/gradescope_run.py selftest     # setup.sh's last step
 
 ``prepare`` makes an nbgrader course directory ``<root>/course``
 (:func:`grader.course.write_course`, then ``nbgrader generate_assignment``) from the problem
 set shipped in ``<root>/source``.
-``grade`` copies ``<root>/submission/*.ipynb`` into ``course/submitted/<student_id>/psNN/``,
-runs ``nbgrader autograde psNN --student=<student_id>`` (the confined kernel,
+``grade`` takes the notebook of ``<root>/submission`` through the course's intake
+(:mod:`grader.intake`: the file named as the problem set's, else the only ``*.ipynb``; a
+regular file of one name inside the folder, at most 20 MB, checked before it is read, JSON
+with cells), writes the grader's own copy into ``course/submitted/<student_id>/psNN/``, runs
+``nbgrader autograde psNN --student=<student_id>`` (the confined kernel,
 :class:`grader.preprocessor.VerifyRecords`: the same code path, so the same points as
 ``make course``), and writes ``<root>/results/results.json`` from the gradebook: one test per
-exercise with the checker's hint or the grader's note. Whatever happens (a notebook that is not
-JSON, a kernel that never ends, a crash of nbgrader), a valid ``results.json`` is written with
-a message saying what happened; the run never ends without one.
+exercise with the checker's hint or the grader's note (shown as text, never HTML).
+
+**Whose fault.** A fault of the student's submission (no notebook, two, a link, a pipe, an
+empty, oversized or non-JSON file, cells that ran past the time limits) writes a valid
+``results.json`` with 0 and a note saying what was wrong and what is expected. A fault of the
+grader's own (the confined kernel cannot start, nbgrader fails, a bug here) writes **no**
+``results.json`` and exits 1: Gradescope then shows "The autograder failed to execute
+correctly" to the instructor, who can rerun it; a broken image never records a 0.
+``selftest`` (setup.sh's last step) grades the solved and a blank copy so and fails the image
+build unless they get full marks and 0.
 
 The root is ``/autograder``; the environment variable ``ROTATIONS_AUTOGRADER_ROOT`` moves it,
 for the tests only. ``ROTATIONS_CELL_TIMEOUT`` and ``ROTATIONS_TIME_BUDGET`` (seconds) shorten
 the per-cell and whole-run limits, for the tests too.
 
-**Without bubblewrap** (a Gradescope image whose Docker forbids user namespaces) the
-submission is not run: ``results.json`` says so, with 0 points and ``"status": "failed"``,
-unless the zip was built with ``--unconfined`` (file ``source/UNCONFINED``): then students'
-code runs as root in the grading container, which holds the solutions (docs/grading.md).
+**Without a confined kernel** (:func:`confinement`, the one place that decides it) the
+submission is not run and run_autograder exits 1, unless the zip was built with
+``--unconfined`` (file ``source/UNCONFINED``): then students' code runs as root in the
+grading container, which holds the solutions (docs/grading.md).
 
 The student: ``users[0]`` of ``<root>/submission_metadata.json``, its ``sid``, else its
 ``email``, else its ``id`` (:func:`student_id`); it is the nbgrader student id of the graded
@@ -52,7 +63,7 @@ UNCONFINED_FLAG = "UNCONFINED"
 SOURCE = Path(__file__).resolve().parents[1]
 HINT = "The check said: "  # grader.preprocessor.HINT (not imported: nbgrader is slow to load)
 
-__all__ = ["student_id", "results_for", "failure", "grade", "prepare", "main"]
+__all__ = ["student_id", "results_for", "failure", "grade", "prepare", "selftest", "main"]
 
 
 def root():
@@ -132,6 +143,8 @@ def failure(message, started, max_score=0.0):
         "score": 0.0,
         "execution_time": round(time.monotonic() - started, 1),
         "output": message,
+        "output_format": "text",
+        "test_output_format": "text",
         "visibility": VISIBILITY,
         "stdout_visibility": "hidden",
         "tests": [
@@ -210,36 +223,51 @@ def results_for(course, ps, student, started):
         "score": total,
         "execution_time": round(time.monotonic() - started, 1),
         "output": f"{ps}: {total:g} of {most:g} points, graded by the course's grader.",
+        "output_format": "text",
+        "test_output_format": "text",
         "visibility": VISIBILITY,
         "stdout_visibility": "hidden",
         "tests": tests,
     }
 
 
-def _submission(top, expected):
-    files = sorted((top / "submission").glob("*.ipynb"))
-    if not files:
-        return None, f"no notebook (.ipynb) in the submission: upload {expected}."
-    named = [f for f in files if f.name == expected]
-    return (named or files)[0], None
+class GraderFault(RuntimeError):
+    """The run failed for the grader's own reasons: run_autograder exits 1, no results.json
+    (Gradescope shows an autograder error the instructor can rerun), never a recorded 0."""
 
 
-def _readable(path):
-    import nbformat
+def _intake(top, expected):
+    """``(bytes of the notebook to grade, note)``; :class:`grader.intake.Refused` with the
+    student's note when there is none to grade (grader/intake.py)."""
+    from grader import intake
 
-    try:
-        nb = nbformat.read(path, as_version=4)
-    except Exception as err:  # noqa: BLE001 - any unreadable file: say so, 0 points
-        return f"{path.name} is not a readable notebook ({type(err).__name__}): 0 points."
-    if not isinstance(nb.get("cells"), list):
-        return f"{path.name} has no cells: 0 points."
-    return None
+    folder = top / "submission"
+    if not folder.is_dir() or folder.is_symlink():
+        raise intake.Refused("no submission folder: nothing was handed in.")
+    name, note = intake.pick(folder, expected)
+    data = intake.read_inside(folder / name, folder)
+    intake.parse(data, name)
+    return data, note
+
+
+def confinement():
+    """``(name, problem)`` of the confinement this autograder uses: the one place that
+    decides it (``problem`` is None when it can start)."""
+    from grader.sandbox import confinement_problem
+
+    if (SOURCE / UNCONFINED_FLAG).is_file():
+        return "unconfined (opted in: UNCONFINED)", None
+    return "bubblewrap", confinement_problem()
 
 
 def _autograde(course, ps, student, budget):
     """``nbgrader autograde`` in a process group of its own, stopped at ``budget`` seconds."""
     cmd = [_nbgrader(), "autograde", ps, f"--student={student}", "--create", "--force"]
     cmd.append(f"--Execute.timeout={int(os.environ.get('ROTATIONS_CELL_TIMEOUT', CELL_TIMEOUT))}")
+    if os.environ.get("ROTATIONS_NOTEBOOK_BUDGET"):
+        cmd.append(
+            f"--ConfinedExecute.notebook_budget={int(os.environ['ROTATIONS_NOTEBOOK_BUDGET'])}"
+        )
     if (SOURCE / UNCONFINED_FLAG).is_file():
         cmd.append("--ConfinedKernelManager.unconfined=True")
     proc = subprocess.Popen(
@@ -261,24 +289,25 @@ def _autograde(course, ps, student, budget):
     return proc.returncode, log
 
 
-def grade(top=None):
-    """run_autograder's step: grade the submission, write results.json; returns it."""
+def grade(top=None, course=None):
+    """run_autograder's step: grade the submission, write results.json; returns it. A fault of
+    the grader's own (:class:`GraderFault`, any exception) removes a stale results.json and
+    raises: run_autograder then exits 1."""
     started = time.monotonic()
     top = Path(top or root())
+    stale = top / "results" / "results.json"
+    if stale.is_file():
+        stale.unlink()
     budget = float(os.environ.get("ROTATIONS_TIME_BUDGET", TIME_BUDGET))
-    try:
-        results = _grade(top, started, budget)
-    except Exception as err:  # noqa: BLE001 - never end without a results.json
-        results = failure(f"the autograder failed ({type(err).__name__}: {err})", started)
+    results = _grade(top, started, budget, Path(course or top / "course"))
     _write(results, top)
     return results
 
 
-def _grade(top, started, budget):
-    from grader.sandbox import confinement_problem
+def _grade(top, started, budget, course):
+    from grader.intake import Refused
 
     ps, expected = assignment()
-    course = top / "course"
     metadata = {}
     meta_path = top / "submission_metadata.json"
     if meta_path.is_file():
@@ -287,30 +316,61 @@ def _grade(top, started, budget):
         except ValueError:
             metadata = {}
     student = student_id(metadata)
-    path, problem = _submission(top, expected)
-    problem = problem or _readable(path)
+    try:
+        data, note = _intake(top, expected)
+    except Refused as err:
+        return failure(f"0 points: {err}", started)
+    name, problem = confinement()
     if problem:
-        return failure(problem, started)
-    confined = confinement_problem()
-    if confined and not (SOURCE / UNCONFINED_FLAG).is_file():
-        return failure(
-            "the autograder cannot run your notebook here: its confined kernel needs "
-            f"bubblewrap ({confined}). Nothing was graded; tell your instructor.",
-            started,
-        )
-    dest = course / "submitted" / student / ps
+        raise GraderFault(f"the confined kernel cannot start here ({problem})")
+    submitted = course / "submitted"
+    dest = submitted / student / ps
+    if submitted.resolve() not in dest.resolve().parents:
+        raise GraderFault(f"student id {student!r} would leave submitted/")
     if dest.exists():
         shutil.rmtree(dest)
     dest.mkdir(parents=True)
-    shutil.copyfile(path, dest / expected)
+    (dest / expected).write_bytes(data)  # the grader's own copy: one name, a regular file
     code, log = _autograde(course, ps, student, budget - (time.monotonic() - started))
     if code is None:
         return failure(f"0 points: {log}; the cells of your notebook ran too long.", started)
     if code != 0:
-        return failure(
-            "the autograder could not grade this notebook; tell your instructor.", started
-        )
-    return results_for(course, ps, student, started)
+        raise GraderFault(f"nbgrader autograde exited {code}")
+    results = results_for(course, ps, student, started)
+    if note:
+        results["output"] += " " + note
+    results["extra_data"] = {"confinement": name, "student": student}
+    return results
+
+
+def selftest(top=None):
+    """setup.sh's last step: the solved copy must get full marks and a blank copy 0, graded
+    as students will be (the same course, confinement and run_autograder code); otherwise
+    :class:`GraderFault` (the image build fails)."""
+    import tempfile
+
+    top = Path(top or root())
+    course = top / "course"
+    ps, expected = assignment()
+    for kind, folder in (("solved", "source"), ("blank", "release")):
+        work = Path(tempfile.mkdtemp(prefix=f"selftest-{kind}-"))
+        try:
+            (work / "submission").mkdir()
+            shutil.copyfile(course / folder / ps / expected, work / "submission" / expected)
+            meta = {"users": [{"sid": f"selftest-{kind}"}]}
+            (work / "submission_metadata.json").write_text(json.dumps(meta))
+            results = grade(work, course)
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
+        most = sum(t.get("max_score", 0.0) for t in results["tests"])
+        want = most if kind == "solved" else 0.0
+        if not results["tests"] or most <= 0 or results["score"] != want:
+            raise GraderFault(
+                f"self-test: the {kind} copy got {results['score']:g} of {most:g} points, "
+                f"expected {want:g} ({results.get('output', '')[:300]})"
+            )
+        print(f"self-test: the {kind} copy got {results['score']:g} of {most:g} points")
+    return True
 
 
 def main(argv=None):
@@ -318,11 +378,23 @@ def main(argv=None):
     if args == ["prepare"]:
         print(f"prepared {prepare()}")
         return 0
-    if args == ["grade"]:
-        results = grade()
-        print(f"score {results['score']:g}: {results.get('output', '')}")
-        return 0
-    print("usage: gradescope_run.py prepare|grade", file=sys.stderr)
+    try:
+        if args == ["grade"]:
+            results = grade()
+            print(f"score {results['score']:g}: {results.get('output', '')}")
+            return 0
+        if args == ["selftest"]:
+            selftest()
+            print("self-test passed: full marks for the solved copy, 0 for a blank one")
+            return 0
+    except Exception as err:  # noqa: BLE001 - the grader's own fault: exit 1, no results.json
+        print(
+            f"gradescope_run: the autograder itself failed ({type(err).__name__}: {err}); "
+            "no results.json was written (Gradescope shows an autograder error; rerun it)",
+            file=sys.stderr,
+        )
+        return 1
+    print("usage: gradescope_run.py prepare|grade|selftest", file=sys.stderr)
     return 2
 
 

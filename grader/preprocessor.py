@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import json
 import math
+import time
 
 import nbformat
 import zmq
@@ -42,6 +43,7 @@ from traitlets import Integer
 from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
+from . import intake
 from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
 from .verify import verdict
 
@@ -97,6 +99,17 @@ class ConfinedExporter(NotebookExporter):
         elif problem:
             self.log.error(refusal(problem))
             raise NbGraderException(refusal(problem))
+        coursedir = getattr(self.parent, "coursedir", None)
+        if coursedir is not None:  # autograde copies no other file of submitted/ (intake.py)
+            coursedir.ignore = [*coursedir.ignore, "*", ".*"]
+
+    def from_filename(self, filename, resources=None, **kw):
+        """The notebook through the course's intake (:func:`grader.intake.nbgrader_read`): a
+        refused file is graded as an empty notebook that carries the note (every grade cell 0)."""
+        nb, resources = intake.nbgrader_read(
+            filename, getattr(self.parent, "coursedir", None), resources, self.log
+        )
+        return self.from_notebook_node(nb, resources=resources, **kw)
 
 
 class ConfinedExecute(Execute):
@@ -115,6 +128,9 @@ class ConfinedExecute(Execute):
 
     max_output_bytes = Integer(
         100_000, help="Output bytes (JSON text of the messages) kept per cell while it runs."
+    ).tag(config=True)
+    notebook_budget = Integer(
+        300, help="Seconds for a notebook's whole run: a cell not started by then is not run."
     ).tag(config=True)
 
     def __init__(self, *args, **kwargs):
@@ -139,8 +155,14 @@ class ConfinedExecute(Execute):
 
     def preprocess(self, nb, resources=None, km=None):
         self._start_cell(None)
+        if nb.metadata.get(intake.NOTE):  # refused at intake: GuardCells gave every grade cell 0
+            return nb, resources
+        self._deadline, self._over = None, False  # the budget starts at the first cell
         try:
-            return super().preprocess(nb, resources, km=km)
+            nb, resources = super().preprocess(nb, resources, km=km)
+            if not self._over:
+                return nb, resources
+            why = OVER_BUDGET.format(self.notebook_budget)
         except DeadKernelError:
             self.log.warning("the kernel died: grade cells that did not run get 0")
             why = "the kernel died (os._exit, a crash or the memory limit) before this cell ran."
@@ -162,6 +184,12 @@ class ConfinedExecute(Execute):
         return nb, resources
 
     async def async_execute_cell(self, cell, cell_index, execution_count=None, store_history=True):
+        now = time.monotonic()
+        if getattr(self, "_deadline", None) is None:
+            self._deadline = now + self.notebook_budget
+        elif now > self._deadline:
+            self._over = True  # past the notebook's budget: not run (preprocess gives it 0)
+            return cell
         self._start_cell(cell_index)
         try:
             return await super().async_execute_cell(
@@ -222,6 +250,10 @@ NOTE_ROOM = 200  # so CapOutput, after, never cuts again what ConfinedExecute ke
 HUNG = (
     "an earlier cell ran past the time limit and ignored the interrupt (SIGINT), so the "
     "kernel was stopped before this cell ran."
+)
+OVER_BUDGET = (
+    "the notebook's cells ran past its time budget of {} s in all, so this cell was not run "
+    "(the cells before it kept their points)."
 )
 HUNG_HERE = (
     "this cell ran past the time limit and ignored the interrupt (SIGINT): the kernel was "
@@ -294,6 +326,7 @@ class GuardCells(NbGraderPreprocessor):
     def preprocess(self, nb, resources):
         notebook_id = resources["unique_key"]
         assignment_id = resources["nbgrader"]["assignment"]
+        refused = nb.metadata.get(intake.NOTE)  # the intake's note: every grade cell 0 with it
         with Gradebook(resources["nbgrader"]["db_url"]) as gb:
             try:
                 source = gb.find_notebook(notebook_id, assignment_id)
@@ -340,7 +373,7 @@ class GuardCells(NbGraderPreprocessor):
         for gid in sorted(set(grades) - seen):
             if gid in released:
                 self.log.warning("%s: grade cell %s deleted: put back with 0", notebook_id, gid)
-                cells.append(_zero(released[gid], gid, grades[gid], "was deleted"))
+                cells.append(_zero(released[gid], gid, grades[gid], "was deleted", refused))
         nb.cells = cells
         return nb, resources
 
@@ -483,11 +516,13 @@ def _index(cells, gid):
     )
 
 
-def _zero(released, gid, points, what):
+def _zero(released, gid, points, what, note=None):
     """The released grade cell, marked so that it keeps 0 points with a note."""
     kind, source = released
     new = (nbformat.v4.new_code_cell if kind == "code" else nbformat.v4.new_markdown_cell)(source)
     new.metadata = nbgrader_metadata(gid, grade=True, locked=True, points=points)
     new.id = gid
-    new.metadata[ZERO] = f"{gid}: 0 points: the grade cell {what} in the submission."
+    new.metadata[ZERO] = (
+        f"{gid}: {note}" if note else (f"{gid}: 0 points: the grade cell {what} in the submission.")
+    )
     return new

@@ -333,3 +333,161 @@ def test_same_points_as_nbgrader_autograde_of_make_course(autograder, tmp_path):
     assert sum(by_nbgrader["p_solved"].values()) == TOTAL
     assert sum(by_nbgrader["p_blank"].values()) == 0
     assert 0 < sum(by_nbgrader["p_half"].values()) < TOTAL
+
+
+# --- intake and the grader's own faults (issue 32) -----------------------------------------
+
+
+def run_raw(top, student, fill, env=None):
+    """run_autograder on a submission folder that ``fill(folder)`` makes (any kind of file):
+    ``(exit code, results or None, stderr)``; results, when written, are valid."""
+    import shutil
+
+    sub = top / "submission"
+    if sub.is_symlink() or sub.is_file():
+        sub.unlink()
+    elif sub.exists():
+        shutil.rmtree(sub)
+    sub.mkdir()
+    fill(sub)
+    meta = {"users": [{"sid": student, "id": 1}]}
+    (top / "submission_metadata.json").write_text(json.dumps(meta))
+    results = top / "results" / "results.json"
+    full = {
+        **os.environ,
+        "ROTATIONS_AUTOGRADER_ROOT": str(top),
+        "ROTATIONS_PYTHON": sys.executable,
+        "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT),
+        **(env or {}),
+    }
+    done = subprocess.run(
+        ["/bin/bash", str(top / "source" / "run_autograder")],
+        env=full,
+        capture_output=True,
+        text=True,
+        timeout=LIMIT,
+    )
+    out = json.loads(results.read_text()) if results.is_file() else None
+    if out is not None:
+        _valid(out)
+        assert out["output_format"] == out["test_output_format"] == "text"
+    return done.returncode, out, done.stderr
+
+
+def _sparse(path, size=2 * 2**30):
+    with open(path, "wb") as f:
+        f.truncate(size)
+
+
+def _zip_bomb(path):
+    """A .zip whose one member unpacks to 256 MB of zeros (about 250 kB packed)."""
+    import zipfile
+
+    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
+        with zf.open("ps01_rigid_body_motion.ipynb", "w", force_zip64=True) as member:
+            block = b"\0" * 2**20
+            for _ in range(256):
+                member.write(block)
+
+
+def _bad_inputs(top):
+    name = notebook(top, "blank")[0]
+    solved = top / "course" / "source" / PS / name
+    return {
+        "no notebook": (lambda s: (s / "README.txt").write_text("hi"), "no notebook"),
+        "two notebooks": (
+            lambda s: [(s / n).write_bytes(solved.read_bytes()) for n in ("a.ipynb", "b c.ipynb")],
+            "2 notebooks",
+        ),
+        "empty": (lambda s: (s / name).write_bytes(b""), "empty"),
+        "not JSON": (lambda s: (s / name).write_bytes(b"\x00\xffnot {"), "not a readable"),
+        "2 GB": (lambda s: _sparse(s / name), "over the limit of 20 MB"),
+        "zip bomb": (lambda s: _zip_bomb(s / "ps01.zip"), "A .zip is not unpacked"),
+        "link to the solved copy": (lambda s: (s / name).symlink_to(solved), "symbolic link"),
+        "link to /etc/shadow": (lambda s: (s / name).symlink_to("/etc/shadow"), "symbolic link"),
+        "linked folder": (lambda s: (s / "x").symlink_to(solved.parent), "no notebook"),
+        "hard link": (lambda s: os.link(solved, s / name), "hard link"),
+        "FIFO": (lambda s: os.mkfifo(s / name), "named pipe"),
+        "folder named .ipynb": (lambda s: (s / name).mkdir(), "a folder"),
+    }
+
+
+def test_bad_submissions_get_0_a_clear_note_and_valid_results_regression_issue32(autograder):
+    """A link to the solved copy got full marks; a 2 GB upload was read whole into memory."""
+    for case, (fill, said) in _bad_inputs(autograder).items():
+        start = time.monotonic()
+        code, results, err = run_raw(autograder, "s_bad", fill)
+        assert code == 0, (case, err[-2000:])
+        assert results["score"] == 0 and said in results["output"], (case, results)
+        assert time.monotonic() - start < 30, case  # refused before nbgrader ran
+        no_leak(results)
+    assert not (autograder / "course" / "submitted" / "s_bad").exists()
+
+
+def test_another_name_unicode_and_spaces_and_a_student_id_with_dots_are_graded(autograder):
+    _, nb = notebook(autograder, "solved")
+
+    def fill(sub):
+        nbformat.write(nb, sub / "mon devoir é (final).ipynb")
+        _zip_bomb(sub / "backup.zip")
+
+    code, results, err = run_raw(autograder, "../../evil/..", fill)
+    assert code == 0, err[-2000:]
+    assert results["score"] == TOTAL, results
+    assert "mon devoir é (final).ipynb" in results["output"], results["output"]
+    assert results["extra_data"]["student"] == "evil"  # never a path
+    assert results["extra_data"]["confinement"] == "bubblewrap"
+    assert (autograder / "course" / "submitted" / "evil" / PS).is_dir()
+
+
+def _missing_bwrap():
+    return {"PATH": "/nonexistent"}  # run_autograder and nbgrader are run by absolute path
+
+
+def test_the_graders_own_faults_exit_1_and_write_no_results(autograder):
+    """A run that failed for the grader's reasons gave the student a recorded 0."""
+    import shutil
+
+    _, blank = notebook(autograder, "blank")
+    name = notebook(autograder, "blank")[0]
+
+    def fill(sub):
+        nbformat.write(blank, sub / name)
+
+    # the confined kernel cannot start (here: no bwrap on PATH)
+    code, results, err = run_raw(autograder, "s_fault", fill, env=_missing_bwrap())
+    assert code == 1 and results is None and "bwrap" in err, err[-2000:]
+    # nbgrader itself fails (its gradebook is not a database)
+    db = autograder / "course" / "gradebook.db"
+    shutil.copyfile(db, db.with_suffix(".keep"))
+    try:
+        db.write_bytes(b"not a database")
+        code, results, err = run_raw(autograder, "s_fault", fill)
+    finally:
+        os.replace(db.with_suffix(".keep"), db)
+    assert code == 1 and results is None and "nbgrader autograde exited" in err, err[-2000:]
+    # a bug of the grader's own (a setting it cannot read)
+    code, results, err = run_raw(autograder, "s_fault", fill, env={"ROTATIONS_CELL_TIMEOUT": "x"})
+    assert code == 1 and results is None and "ValueError" in err, err[-2000:]
+
+
+def _selftest(top, env=None):
+    full = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top), **(env or {})}
+    return subprocess.run(
+        [sys.executable, str(top / "source/grader/gradescope_run.py"), "selftest"],
+        env=full,
+        capture_output=True,
+        text=True,
+        timeout=LIMIT,
+    )
+
+
+def test_setup_self_test_passes_on_a_good_image_and_fails_a_broken_one(autograder):
+    done = _selftest(autograder)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    assert f"the solved copy got {TOTAL} of {TOTAL} points" in done.stdout
+    assert f"the blank copy got 0 of {TOTAL} points" in done.stdout
+    # no confinement: the build fails, with the reason
+    done = _selftest(autograder, _missing_bwrap())
+    assert done.returncode == 1 and "bwrap" in done.stderr, done.stderr[-2000:]
+    # a grader that does not give the solved copy full marks: tests/test_grading_intake.py

@@ -6,8 +6,8 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
 (``setup.sh``, ``run_autograder``) and what grading needs:
 
 - ``course_lib/``, ``pyproject.toml``, ``README.md``, the pins (``environment-student.txt``,
-  ``requirements-grader.txt``: nbgrader's and nh3's pins from ``environment.txt``): setup.sh installs
-  them into ``/opt/rotations-venv`` (outside ``/autograder``);
+  ``requirements-grader.txt``: nbgrader's and nh3's pins from ``environment.txt``): setup.sh
+  installs them into ``/opt/rotations-venv`` (outside ``/autograder``);
 - ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
   ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
 - **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` of this set's chapter only

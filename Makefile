@@ -141,8 +141,8 @@ clean:
 .PHONY: course bench-grade
 COURSE ?=
 course: $(STAMP)
-	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR"; exit 2; }
-	$(BIN)/python -m grader.course $(COURSE)
+	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR [ROSTER=roster.csv]"; exit 2; }
+	$(BIN)/python -m grader.course $(COURSE) $(if $(ROSTER),--roster "$(ROSTER)")
 
 # A class of 20 simulated students through `make course` and real nbgrader: autograde time
 # per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
@@ -157,7 +157,7 @@ ASSIGNMENT ?=
 ROSTER     ?=
 UNCONFINED ?=
 gradescope: $(STAMP)
-	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined)
+	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined) $(if $(ROSTER),--roster "$(ROSTER)")
 
 grades-canvas: $(STAMP)
 	@test -n "$(COURSE)" || { echo "usage: make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv]"; exit 2; }

@@ -60,7 +60,7 @@ exercises: $(STAMP)
 .PHONY: variant
 variant: $(STAMP)
 	@test -n "$(STUDENT)" -a -n "$(PS)" || { echo "usage: make variant STUDENT=id PS=psNN"; exit 2; }
-	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)"
+	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)" $(if $(ROSTER),--roster "$(ROSTER)")
 
 # The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
 # build/site-instructor/ with a banner on every page (never over the student site). Its tools
@@ -176,7 +176,7 @@ test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q \
 		-m "slow_grading or gradescope or slow_variants" \
 		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py \
-		tests/test_grading_variants_nbgrader.py
+		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every

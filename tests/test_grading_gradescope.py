@@ -235,7 +235,7 @@ def test_student_code_sees_no_autograder_file_and_cannot_write_results(autograde
     attack = ATTACK.format(top=str(autograder), results=str(autograder / "results"))
     results = run_autograder(autograder, "s_attack", _prefix_first_answer(nb, attack))
     assert results["score"] == 0 and "pwned" not in json.dumps(results), results
-    graded = autograder / "course" / "autograded" / "s_attack" / PS
+    graded = autograder / "course" / "autograded" / "s_attack@example.edu" / PS  # the e-mail
     text = next(graded.glob("*.ipynb")).read_text()
     seen = text.split("SEEN ", 1)[1].split("\\n", 1)[0]
     # in view: the installed course_lib only (what students have anyway), here the zip's copy

@@ -259,3 +259,43 @@ def test_the_leak_gate_refuses_a_roster_for_students_and_lets_the_gradescope_zip
     files = gradescope.members("ps01", roster=_roster(tmp_path, CANVAS))
     assert gradescope.leak_check(files) == [] and files["roster.csv"] == CANVAS.encode()
     assert not any("roster" in name for name in gradescope.members("ps01"))
+
+
+def test_without_a_roster_the_laptop_email_and_gradescopes_email_are_one_key():
+    meta = {"users": [{"email": " ALICE7@example.edu", "sid": "3031042", "id": 9}]}
+    got = identity(meta, Roster())
+    assert (got.key, got.how, got.note) == (KEY, "no roster", "")
+    set_student_id("Alice7@Example.EDU")
+    assert student_id()[0] == got.key
+
+
+def test_a_roster_that_cannot_be_trusted_grades_nothing(tmp_path):
+    """make course refuses to copy it; autograde's exporter (made before any submission is
+    read) refuses the run; make gradescope refuses to build the zip. The line is named."""
+    from nbgrader.converters.base import NbGraderException
+    from traitlets.config import Config
+
+    from grader import gradescope
+    from grader.course import write_course
+    from grader.preprocessor import ConfinedExporter
+
+    bad = _roster(tmp_path, "a@x.edu,alice\nb@x.edu,alice\n")
+    with pytest.raises(RosterError, match="line 2"):
+        write_course(tmp_path / "course", roster=bad)
+    config = Config()
+    config.CourseIdentity.rosters = [str(bad)]
+    with pytest.raises(NbGraderException, match="line 2: the alias 'alice'.*nothing was graded"):
+        ConfinedExporter(config=config)
+    with pytest.raises(RosterError, match="line 2"):
+        gradescope.members("ps01", roster=bad)
+
+
+def test_the_canvas_report_lists_the_students_whose_id_needs_a_look():
+    from grader.canvas import IDENTITY, Export
+
+    row = {"assignment": "ps01", "student": "bob9", "graded_as": "bob9@x.edu", "how": "roster"}
+    out = Export([*IDENTITY, "ps01"], [["Points Possible"]])
+    out.identity = [{**row, "other_numbers": "a b", "lost": "b"}]
+    (line,) = [x for x in out.report() if x.startswith("check the id")]
+    assert "bob9 on ps01 was graded on the numbers of bob9@x.edu" in line
+    assert "showed others in a b" in line and "points lost there: b (regrade?)" in line

@@ -206,23 +206,23 @@ def _client_class():
 
 #: The kernel's student id: the course's example numbers (course_lib.exercises._identity),
 #: whatever id the instructor's own shell or hub sets, so the stored outputs are the same for all.
-KERNEL_IDS = {"COURSE_STUDENT_ID": "(example)", "JUPYTERHUB_USER": None, "COURSE_GRADER_ID": None}
+EXAMPLE_ID = "(example)"
 
 
-def _example_id():
+def _kernel_id(student):
     import os
 
-    for var, value in KERNEL_IDS.items():
-        if value is None:
-            os.environ.pop(var, None)
-        else:
-            os.environ[var] = value
+    for var in ("JUPYTERHUB_USER", "COURSE_GRADER_ID", "COURSE_STUDENT_ID"):
+        os.environ.pop(var, None)
+    if student:
+        os.environ["COURSE_STUDENT_ID"] = student
 
 
-def execute(nb, cwd):
-    """Run every cell of ``nb`` in a fresh kernel started in ``cwd`` (as the example student:
-    :data:`KERNEL_IDS`); return the seconds."""
-    _example_id()
+def execute(nb, cwd, student=EXAMPLE_ID):
+    """Run every cell of ``nb`` in a fresh kernel started in ``cwd``, as ``student`` (default
+    the example student; None: no id, as a student's page on the site shows it); return the
+    seconds."""
+    _kernel_id(student)
     client = _client_class()(
         nb,
         timeout=CELL_TIMEOUT,

@@ -183,7 +183,10 @@ def identity_line():
     """
     sid, source = student_id()
     if sid == EXAMPLE_ID:
-        return "Student id: the course's example numbers (the instructor's copy, tests)."
+        return (
+            "Student id: none, these are the course's example numbers (the instructor's copy "
+            "and the tests run as the example student)."
+        )
     if sid:
         return (
             f"Student id: **{sid}** (from {_SOURCES[source]}). The exercises show the numbers "

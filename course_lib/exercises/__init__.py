@@ -261,7 +261,15 @@ def show(name):
 
 def numbers_text(chapter):
     """The markdown of :func:`your_numbers`: whose numbers, then every statement of the
-    chapter's exercises with variants, with those numbers (none before an id is set)."""
+    chapter's exercises with variants, with those numbers (none before an id is set).
+
+    Examples
+    --------
+    >>> set_student_id("Ada@Example.org")
+    >>> print(numbers_text(1).splitlines()[0])  # doctest: +ELLIPSIS
+    Student id: **ada@example.org** (from set_student_id). The exercises show the numbers...
+    >>> set_student_id(None)
+    """
     varied = [ex for ex in exercises(chapter) if ex.variants is not None]
     if not varied:
         return "Every student has the same numbers in this problem set: no student id is needed."
@@ -280,7 +288,13 @@ def numbers_text(chapter):
 
 def your_numbers(chapter):
     """Whose numbers the problem set of ``chapter`` shows, and all its statements with those
-    numbers, so that they can be read before any answer cell runs (notebook markdown).
+    numbers, so that they can be read before any answer cell runs (notebook markdown: the
+    text of :func:`numbers_text`).
+
+    Examples
+    --------
+    >>> your_numbers(1).data == numbers_text(1)
+    True
 
     Raises
     ------

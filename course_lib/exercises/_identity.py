@@ -161,7 +161,13 @@ def student_id():
 
 
 def how_to_set_id():
-    """How to set the student id, one line per platform (markdown)."""
+    """How to set the student id, one line per platform (markdown).
+
+    Examples
+    --------
+    >>> print(how_to_set_id().splitlines()[1])
+    - laptop, Binder or Colab: `set_student_id("your e-mail")` in that cell;
+    """
     return (
         "Set your student id (your institutional e-mail) in the cell at the top of the "
         "problem set, then run the cells again:\n"

@@ -1,10 +1,11 @@
 """One student, one key, on both grading paths (issue 33), with the course's roster.
 
-Problem set 1 in a `make course` directory with a roster (``key,alias,alias``), and in a
-Gradescope autograder zip that carries it. Each student's notebook is the solved copy as the
-student ran it: the id set in its student-id cell, executed, its answers hard-wired to the
-numbers of the id the student worked with (``parameters(name, student=...)``), so that only
-the right numbers get the points.
+Problem set 1 in a `make course` directory with a roster (``key,alias,alias``); the same
+notebooks through a Gradescope autograder that carries the roster are in
+``tests/test_grading_gradescope.py`` (it reuses that file's prepared autograder). Each
+student's notebook is the solved copy as the student ran it: the id set in its student-id
+cell, executed, its answers hard-wired to the numbers of the id the student worked with
+(``parameters(name, student=...)``), so that only the right numbers get the points.
 
 - alice7 worked on a laptop as "Alice7@Example.EDU " (capitals, a space); nbgrader knows her
   as the hub user ``alice7``, Gradescope by her e-mail and sid: full marks on both paths.
@@ -17,7 +18,6 @@ the right numbers get the points.
 from __future__ import annotations
 
 import csv
-import os
 import sys
 from pathlib import Path
 
@@ -33,7 +33,7 @@ from course_lib.exercises import exercises  # noqa: E402
 from course_lib.exercises._variants import table, variant_index  # noqa: E402
 from grader.course import write_course  # noqa: E402
 
-pytestmark = [pytest.mark.notebook_exec, pytest.mark.confined]
+pytestmark = [pytest.mark.notebook_exec, pytest.mark.confined, pytest.mark.slow_grading]
 PS, CHAPTER = "ps01", 1
 TOTAL = sum(ex.points for ex in exercises(CHAPTER))
 VARIED = [ex for ex in exercises(CHAPTER) if ex.variants is not None]
@@ -41,7 +41,7 @@ ROSTER = "key,alias,alias\nalice7@example.edu,alice7,3031042\nbob9@example.edu,b
 WORKED_AS = {"alice7": "Alice7@Example.EDU ", "bob9": "bob9", "zed": "zed"}
 
 
-def _differs(a, b):
+def differs(a, b):
     """The exercises of the set whose numbers differ for the ids ``a`` and ``b``."""
     out = []
     for ex in VARIED:
@@ -51,7 +51,7 @@ def _differs(a, b):
     return out
 
 
-def _worked(source, worked_as, monkeypatch):
+def worked_copy(source, worked_as, monkeypatch):
     """The solved copy ``source`` as a student who set the id ``worked_as`` ran it."""
     from nbclient import NotebookClient
 
@@ -81,7 +81,7 @@ def worked(tmp_path_factory):
     write_course(top)
     source = next((top / "source" / PS).glob("*.ipynb"))
     try:
-        return source.name, {s: _worked(source, who, mp) for s, who in WORKED_AS.items()}
+        return source.name, {s: worked_copy(source, who, mp) for s, who in WORKED_AS.items()}
     finally:
         mp.undo()
 
@@ -92,7 +92,6 @@ def _report(folder):
         return {r["student"]: r for r in csv.DictReader(f)}
 
 
-@pytest.mark.slow_grading
 def test_nbgrader_with_the_roster_one_key_per_student(worked, tmp_path):
     from nbgrader.api import Gradebook
 
@@ -120,7 +119,7 @@ def test_nbgrader_with_the_roster_one_key_per_student(worked, tmp_path):
         }
     assert sum(points["alice7"].values()) == TOTAL, points["alice7"]
     assert sum(points["zed"].values()) == TOTAL, points["zed"]
-    lost = _differs("bob9", "bob9@example.edu")
+    lost = differs("bob9", "bob9@example.edu")
     assert lost, "bob9's and his key's numbers should differ somewhere"
     assert sum(points["bob9"].values()) == TOTAL - sum(ex.points for ex in lost)
     report = _report(course)
@@ -132,52 +131,3 @@ def test_nbgrader_with_the_roster_one_key_per_student(worked, tmp_path):
     feedback = next((course / "autograded" / "bob9" / PS).glob("*.ipynb")).read_text()
     assert "graded on the numbers of 'bob9@example.edu'" in feedback
     assert "regrade" in feedback and "numbers of the id 'bob9'" in feedback
-
-
-@pytest.mark.gradescope
-def test_gradescope_with_the_roster_in_the_zip(worked, tmp_path):
-    import json
-    import subprocess
-
-    from grader import gradescope
-
-    name, subs = worked
-    roster = tmp_path / "export.csv"
-    roster.write_text(ROSTER)
-    top = tmp_path / "autograder"
-    for member, data in gradescope.members(PS, roster=roster).items():
-        path = top / "source" / member
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_bytes(data)
-    env = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top), "ROTATIONS_PYTHON": sys.executable}
-    script = str(top / "source/grader/gradescope_run.py")
-    done = subprocess.run(
-        [sys.executable, script, "prepare"], env=env, capture_output=True, text=True
-    )
-    assert done.returncode == 0, done.stdout + done.stderr
-
-    def grade(student, meta):
-        sub = top / "submission"
-        sub.mkdir(exist_ok=True)
-        for old in sub.glob("*"):
-            old.unlink()
-        nbformat.write(subs[student], sub / name)
-        (top / "submission_metadata.json").write_text(json.dumps({"users": [meta]}))
-        done = subprocess.run(
-            ["bash", str(top / "source/run_autograder")], env=env, capture_output=True, text=True
-        )
-        assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
-        return json.loads((top / "results" / "results.json").read_text())
-
-    alice = grade("alice7", {"email": "ALICE7@example.edu", "sid": "3031042", "id": 1})
-    assert alice["score"] == TOTAL, alice["output"]
-    assert alice["extra_data"]["identity"]["graded_as"] == "alice7@example.edu"
-    assert "Your student id" not in alice["output"]
-    bob = grade("bob9", {"email": "Bob9@Example.edu", "id": 2})
-    lost = _differs("bob9", "bob9@example.edu")
-    assert bob["score"] == TOTAL - sum(ex.points for ex in lost)
-    assert "graded on the numbers of 'bob9@example.edu'" in bob["output"]
-    assert set(bob["extra_data"]["identity"]["lost"].split()) == {ex.name for ex in lost}
-    zed = grade("zed", {"email": "zed@example.edu", "id": 3})
-    assert zed["extra_data"]["identity"]["how"] == "not in the roster"
-    assert "not in the course's roster" in zed["output"]

@@ -196,8 +196,17 @@ def load(paths):
 
 def write_report(path, assignment, student, row):
     """Replace the rows of (``assignment``, ``student``) in the report CSV at ``path`` by
-    ``row`` (a dict of :data:`REPORT_COLUMNS`), or remove them when ``row`` is None."""
+    ``row`` (a dict of :data:`REPORT_COLUMNS`), or remove them when ``row`` is None. Several
+    grading processes at once (docs/grading.md) take turns on a lock file beside it."""
+    import fcntl
+
     path = Path(path)
+    with open(path.with_name(path.name + ".lock"), "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        _rewrite(path, assignment, student, row)
+
+
+def _rewrite(path, assignment, student, row):
     rows = []
     if path.is_file():
         with open(path, newline="", encoding="utf-8") as f:

@@ -18,7 +18,6 @@ import os
 from functools import cache
 from pathlib import Path
 
-from nbgrader import utils
 from nbgrader.preprocessors import NbGraderPreprocessor
 from traitlets import List, Unicode
 from traitlets.config import LoggingConfigurable
@@ -66,8 +65,10 @@ class CourseIdentity(LoggingConfigurable):
 
 def _shown(cell):
     """``{"variant": k, "student": id}`` from a check cell's submitted record, or None."""
-    for out in cell.get("outputs", []):
-        data = out.get("data", {}).get(MIME) if isinstance(out.get("data"), dict) else None
+    outputs = cell.get("outputs")
+    for out in outputs if isinstance(outputs, list) else ():
+        data = out.get("data") if isinstance(out, dict) else None
+        data = data.get(MIME) if isinstance(data, dict) else None
         if isinstance(data, dict) and type(data.get("variant")) is int:
             student = data.get("student")
             return {
@@ -83,10 +84,16 @@ class ShownNumbers(NbGraderPreprocessor):
     def preprocess(self, nb, resources):
         shown = {}
         for cell in nb.cells:
-            if cell.cell_type != "code" or not utils.is_grade(cell):
+            # it runs before GuardCells repairs anything: any metadata, any outputs, no error
+            meta = cell.get("metadata") if isinstance(cell, dict) else None
+            grading = meta.get("nbgrader") if isinstance(meta, dict) else None
+            gid = grading.get("grade_id") if isinstance(grading, dict) else None
+            if cell.get("cell_type") != "code" or not isinstance(gid, str):
                 continue
-            gid = str(cell.metadata.get("nbgrader", {}).get("grade_id", ""))
-            got = _shown(cell) if gid.endswith(SUFFIX) else None
+            try:
+                got = _shown(cell) if gid.endswith(SUFFIX) else None
+            except Exception:  # noqa: BLE001 - a note only: a malformed output gives none
+                got = None
             if got is not None:
                 shown[gid[: -len(SUFFIX)]] = got
         nb.metadata[SHOWN] = shown  # replaces whatever the submission held under this name

@@ -20,6 +20,7 @@ sys.path.insert(0, str(ROOT))
 from course_lib import exercises as X  # noqa: E402
 from course_lib.exercises import _identity as I  # noqa: E402
 from course_lib.exercises import check, parameters, set_student_id, student_id  # noqa: E402
+from course_lib.record import MIME  # noqa: E402
 from grader.gradescope_run import identity  # noqa: E402
 from grader.gradescope_run import student_id as folder_of  # noqa: E402
 from grader.identity import Roster, RosterError, load, read_roster, write_report  # noqa: E402
@@ -299,3 +300,24 @@ def test_the_canvas_report_lists_the_students_whose_id_needs_a_look():
     (line,) = [x for x in out.report() if x.startswith("check the id")]
     assert "bob9 on ps01 was graded on the numbers of bob9@x.edu" in line
     assert "showed others in a b" in line and "points lost there: b (regrade?)" in line
+
+
+def test_regression_shown_numbers_reads_malformed_cells_without_failing():
+    """ShownNumbers runs before GuardCells repairs a submission: null grading metadata made
+    nbgrader drop the student (test_grading_nbgrader's malformed-metadata submission)."""
+    import nbformat
+
+    from grader.id_preprocessors import SHOWN, ShownNumbers
+
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("x") for _ in range(4)])
+    cells = nb.cells
+    cells[0].metadata["nbgrader"] = None
+    cells[1].metadata["nbgrader"] = {"grade_id": "a-check", "grade": True}
+    cells[1].outputs = [{"output_type": "display_data", "data": "not a dict"}, 7]
+    cells[2].metadata["nbgrader"] = {"grade_id": "b-check", "grade": True}
+    record = {"variant": 3, "student": "bob9" * 100}
+    cells[2].outputs = [nbformat.v4.new_output("display_data", data={MIME: record})]
+    cells[3].metadata["nbgrader"] = {"grade_id": 12}
+    nb.metadata[SHOWN] = {"b": {"variant": 0}, "forged": 1}
+    nb, _ = ShownNumbers().preprocess(nb, {})
+    assert nb.metadata[SHOWN] == {"b": {"variant": 3, "student": ("bob9" * 100)[:200]}}

@@ -61,7 +61,7 @@ exercises: $(STAMP)
 .PHONY: variant
 variant: $(STAMP)
 	@test -n "$(STUDENT)" -a -n "$(PS)" || { echo "usage: make variant STUDENT=id PS=psNN"; exit 2; }
-	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)"
+	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)" $(if $(ROSTER),--roster "$(ROSTER)")
 
 # The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
 # build/site-instructor/ with a banner on every page (never over the student site). Its tools
@@ -143,8 +143,8 @@ clean:
 .PHONY: course bench-grade
 COURSE ?=
 course: $(STAMP)
-	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR"; exit 2; }
-	$(BIN)/python -m grader.course $(COURSE)
+	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR [ROSTER=roster.csv]"; exit 2; }
+	$(BIN)/python -m grader.course $(COURSE) $(if $(ROSTER),--roster "$(ROSTER)")
 
 # A class of 20 simulated students through `make course` and real nbgrader: autograde time
 # per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
@@ -159,7 +159,7 @@ ASSIGNMENT ?=
 ROSTER     ?=
 UNCONFINED ?=
 gradescope: $(STAMP)
-	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined)
+	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined) $(if $(ROSTER),--roster "$(ROSTER)")
 
 grades-canvas: $(STAMP)
 	@test -n "$(COURSE)" || { echo "usage: make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv]"; exit 2; }
@@ -178,7 +178,7 @@ test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q \
 		-m "slow_grading or gradescope or slow_variants" \
 		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py \
-		tests/test_grading_variants_nbgrader.py
+		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every

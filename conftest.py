@@ -8,9 +8,11 @@
   skipped and the run ends with one line per tool: how many were skipped, why, and the command
   that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run`` sets all three)
   a missing tool fails those tests instead.
-- The tests run as no student: the exercises' numbers depend on the student id
-  (``course_lib/exercises/_variants.py``), and a JupyterHub sets ``JUPYTERHUB_USER`` in every
-  server, so both id variables are removed before any test or notebook kernel starts.
+- The tests run as the course's example student (``COURSE_STUDENT_ID`` is ``"(example)"``,
+  the default numbers of every exercise, as in the instructor's solved copies): the exercises'
+  numbers depend on the student id (``course_lib/exercises/_identity.py``), a JupyterHub sets
+  ``JUPYTERHUB_USER`` in every server, and a check on an exercise with variants refuses to
+  pass without an id. A test of "no id" removes the variable itself (monkeypatch).
 """
 
 from __future__ import annotations
@@ -22,8 +24,9 @@ from functools import cache
 
 import pytest
 
-for _id in ("COURSE_STUDENT_ID", "JUPYTERHUB_USER"):
+for _id in ("JUPYTERHUB_USER", "COURSE_GRADER_ID"):
     os.environ.pop(_id, None)
+os.environ["COURSE_STUDENT_ID"] = "(example)"  # course_lib.exercises._identity.EXAMPLE_ID
 
 
 @dataclass(frozen=True)

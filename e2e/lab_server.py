@@ -45,8 +45,13 @@ class Server:
         self.log_path = tmp / "jupyterlab.log"
         config_dir = tmp / "config"
         lab_config.write(config_dir)
-        env = dict(os.environ)
+        env = {
+            k: v for k, v in os.environ.items() if k not in ("JUPYTERHUB_USER", "COURSE_GRADER_ID")
+        }
         env.update(
+            # the instructor's solved problem sets run as the course's example student (the
+            # checks of exercises with per-student numbers refuse to pass without an id)
+            COURSE_STUDENT_ID="(example)",
             JUPYTER_CONFIG_DIR=str(config_dir),
             JUPYTER_DATA_DIR=str(tmp / "data"),
             JUPYTER_RUNTIME_DIR=str(tmp / "runtime"),

@@ -19,6 +19,9 @@ ID`` the nbgrader id.
 Names, ids and sections come from students and the roster: a cell that a spreadsheet would read
 as a formula (``=``, ``+``, ``-``, ``@`` ...) is written with a leading ``'``
 (:mod:`grader.csv_safe`); Canvas matches students by ``ID``, which is a number.
+The students of ``DIR/identity-report.csv`` (written by the grader: a notebook that showed
+other numbers than the student's own, or an id the course's roster does not know) are listed
+in the report too ("check the id"), with the exercises whose points a regrade may change.
 
 Nothing is silently zero: a student of the roster or the gradebook with no submission of an
 assignment gets a **blank** cell and is listed as missing; a graded nbgrader student that no
@@ -52,6 +55,7 @@ class Export:
     rows: list
     missing: list = field(default_factory=list)  # (student, assignment)
     unknown: list = field(default_factory=list)  # nbgrader ids no roster row matches
+    identity: list = field(default_factory=list)  # rows of the course's identity report
 
     def report(self):
         """The lines of the report: every missing submission and unknown student."""
@@ -62,6 +66,13 @@ class Export:
         lines += [
             f"unknown student: {sid} is graded in nbgrader but not in the roster"
             for sid in self.unknown
+        ]
+        lines += [
+            f"check the id: {r['student']} on {r['assignment']} was graded on the numbers of "
+            f"{r['graded_as']} ({r['how']})"
+            + (f"; the notebook showed others in {r['other_numbers']}" * bool(r["other_numbers"]))
+            + (f"; points lost there: {r['lost']} (regrade?)" * bool(r["lost"]))
+            for r in self.identity
         ]
         return lines
 
@@ -104,6 +115,11 @@ def export(course, assignments=None, roster=None):
     if not db.is_file():
         raise ValueError(f"COURSE: no gradebook.db in {course} (run nbgrader autograde first)")
     fields, rows = read_roster(roster) if roster else (None, None)
+    report = Path(course) / "identity-report.csv"  # grader.identity.REPORT, by VerifyRecords
+    flagged = []
+    if report.is_file():
+        with open(report, newline="", encoding="utf-8") as f:
+            flagged = list(csv.DictReader(f))
     with Gradebook(f"sqlite:///{db}") as gb:
         known = {a.name: a for a in gb.assignments}
         names = list(assignments or sorted(known))
@@ -149,6 +165,7 @@ def export(course, assignments=None, roster=None):
                     out.missing.append((ident[0] or sid, ps))
                 cells.append("" if score is None else f"{score:g}")
             out.rows.append([*ident, *cells])
+    out.identity = [r for r in flagged if r.get("assignment") in names]
     return out
 
 

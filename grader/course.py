@@ -4,6 +4,8 @@
 
 writes
 
+- ``DIR/roster.csv`` with ``--roster FILE`` (``make course ROSTER=FILE``): the instructor's
+  roster, checked, which maps every id of a student to the course's key (grader/identity.py);
 - ``DIR/nbgrader_config.py``: the course's preprocessors (:mod:`grader.preprocessor`: the
   confined kernel, the grader's verdict, the guard against malformed submissions), the folders
   the kernel must not see, timeouts;
@@ -24,7 +26,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import re
+import shutil
 import sys
 from pathlib import Path
 
@@ -98,6 +102,7 @@ from grader.preprocessor import (
     ConfinedExecute,
     ConfinedExporter,
     GuardCells,
+    ShownNumbers,
     VerifyRecords,
 )
 from grader.pages import InertStudentHTML
@@ -107,7 +112,9 @@ c.CourseDirectory.root = {root!r}
 c.CourseDirectory.course_id = "rotations"
 
 # A deleted, duplicated or retyped grade cell: put back with 0 points and a note.
+# ShownNumbers first: which numbers the student's own run showed (a note, never points).
 c.Autograde.sanitize_preprocessors = [
+    ShownNumbers,
     ClearOutput,
     GuardCells,
     DeduplicateIds,
@@ -152,6 +159,11 @@ c.HTMLExporter.filters = {{
     "markdown2html": "grader.pages.safe_markdown2html",
     "clean_html": "grader.pages.clean_html",
 }}
+# The roster (docs/variants.md, "One id per student"): every alias of a student (this nbgrader
+# student id, a hub user, an SIS id) to the course's key, from which their numbers are drawn.
+# Students whose notebook showed other numbers, or whom the roster does not know, are listed in
+# identity-report.csv beside gradebook.db.
+c.CourseIdentity.rosters = {rosters!r}
 """
 
 
@@ -198,7 +210,7 @@ def hidden_folders(course, root=ROOT):
     return sorted({str(p) for p in out})
 
 
-def config_text(course, root=ROOT, timeout=TIMEOUT):
+def config_text(course, root=ROOT, timeout=TIMEOUT, rosters=()):
     """The text of ``nbgrader_config.py`` for the course directory ``course``."""
     course = Path(course).resolve()
     return CONFIG.format(
@@ -207,7 +219,24 @@ def config_text(course, root=ROOT, timeout=TIMEOUT):
         timeout=int(timeout),
         budget=BUDGET,
         hide=hidden_folders(course, root),
+        rosters=[str(p) for p in rosters],
     )
+
+
+ROSTER = "roster.csv"  # the copy of the instructor's roster in the course directory
+
+
+def copy_roster(roster, course):
+    """Check the roster (:mod:`grader.identity`: RosterError naming the line) and copy it
+    into the course directory, which the confined kernel never sees; returns the copy."""
+    from grader.identity import load
+
+    load([roster])
+    dest = Path(course) / ROSTER
+    if Path(roster).resolve() != dest.resolve():
+        shutil.copyfile(roster, dest)
+    os.chmod(dest, 0o600)
+    return dest
 
 
 def write_feedback_math(course, mathjax):
@@ -226,15 +255,21 @@ def write_feedback_math(course, mathjax):
     return FEEDBACK_CONFIG.format(name=FEEDBACK, templates=str(folder.parent))
 
 
-def write_course(course, root=ROOT, mathjax=None):
+def write_course(course, root=ROOT, mathjax=None, roster=None):
     """Write the course directory; returns the assignment names. ``mathjax``: the
-    ``tex-svg.js`` of MathJax 3 for offline feedback (default: the site build's, when there)."""
+    ``tex-svg.js`` of MathJax 3 for offline feedback (default: the site build's, when there);
+    ``roster``: the instructor's roster CSV, copied in (default: a ``roster.csv`` already in
+    the course directory, else none)."""
     course = Path(course).resolve()
     if course == root.resolve() or root.resolve() in course.parents:
         raise ValueError(f"COURSE must be outside the repository, got {course}")
     course.mkdir(parents=True, exist_ok=True)
     mathjax = Path(mathjax) if mathjax else root / MATHJAX
-    config = config_text(course, root)
+    if roster or (course / ROSTER).is_file():
+        rosters = [copy_roster(roster or course / ROSTER, course)]
+    else:
+        rosters = []
+    config = config_text(course, root, rosters=rosters)
     if mathjax.is_file():
         config += write_feedback_math(course, mathjax)
     (course / "nbgrader_config.py").write_text(config)
@@ -260,11 +295,12 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("course", metavar="DIR", help="the course directory to write")
     parser.add_argument("--mathjax", help="MathJax 3's es5/tex-svg.js (default: make site's)")
+    parser.add_argument("--roster", help="roster CSV: Canvas export, or key,alias...")
     args = parser.parse_args(argv)
     if not re.fullmatch(r"[^\0]+", args.course):
         parser.error("DIR must be a folder name")
     try:
-        names = write_course(Path(args.course), mathjax=args.mathjax)
+        names = write_course(Path(args.course), mathjax=args.mathjax, roster=args.roster)
     except (OSError, ValueError) as err:
         print(f"make course: {err}", file=sys.stderr)
         return 2

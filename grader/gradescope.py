@@ -10,6 +10,9 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
   installs them into ``/opt/rotations-venv`` (outside ``/autograder``);
 - ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
   ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
+- ``roster.csv`` when built with ``--roster`` (``make gradescope ROSTER=...``): the class
+  roster that maps Gradescope's e-mail or ``sid`` to the course's key (:mod:`grader.identity`),
+  scanned by the leak gate like the rest; students never see the zip;
 - **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` of this set's chapter only
   (the reference solutions that :mod:`grader.verify` re-checks every recorded answer against,
   at fresh points; never another chapter's) and
@@ -47,6 +50,8 @@ __all__ = ["members", "build_zip", "leak_check", "SECRET", "SETUP", "RUN", "MIN_
 VENV = "/opt/rotations-venv"
 #: Zip members that hold the solutions on purpose (the leak gate does not scan them).
 SECRET = re.compile(r"^(tools/solutions/[^/]+\.py|problem_sets/ps\d\d_[^/]+\.ipynb)$")
+#: The class roster, in the zip on purpose (Gradescope does not show the zip to students).
+ROSTER_MEMBER = "roster.csv"
 
 #: The oldest Python the grader's pins install on (nbgrader 0.9.6: Requires-Python >=3.11).
 MIN_PYTHON = (3, 11)
@@ -110,8 +115,9 @@ def _grader_pins(root=ROOT):
     return "\n".join(pins)
 
 
-def members(ps, root=ROOT, unconfined=False):
-    """``{name in the zip: bytes}`` of the autograder of problem set ``ps`` (``"ps01"``)."""
+def members(ps, root=ROOT, unconfined=False, roster=None):
+    """``{name in the zip: bytes}`` of the autograder of problem set ``ps`` (``"ps01"``);
+    ``roster``: the course's roster CSV (checked), as ``roster.csv``."""
     made = sorted((root / "problem_sets").glob(f"{ps}_*.ipynb"))
     if len(made) != 1:
         raise ValueError(f"ps: expected one problem_sets/{ps}_*.ipynb, found {len(made)}")
@@ -133,6 +139,11 @@ def members(ps, root=ROOT, unconfined=False):
     out[f"problem_sets/{made[0].name}"] = made[0].read_bytes()
     if unconfined:
         out["UNCONFINED"] = b"students' code runs unconfined (docs/grading.md)\n"
+    if roster:
+        from grader.identity import load
+
+        load([roster])  # RosterError naming the line: no zip that grades on a guess
+        out["roster.csv"] = Path(roster).read_bytes()
     return out
 
 
@@ -151,13 +162,18 @@ def leak_check(files, root=ROOT):
         found = leak_gate.Report()
         leak_gate.scan_data(name, data, needles, found)
         code = name.endswith((".py", ".md"))  # the grader's code names the markers it handles
-        report.hits += [h for h in found.hits if not (code and "nbgrader marker" in h)]
+        roster = name == ROSTER_MEMBER  # the roster is here on purpose; its text is scanned
+        report.hits += [
+            h
+            for h in found.hits
+            if not (code and "nbgrader marker" in h) and not (roster and "class roster" in h)
+        ]
     return report.hits
 
 
-def build_zip(ps, out, root=ROOT, unconfined=False):
+def build_zip(ps, out, root=ROOT, unconfined=False, roster=None):
     """Write ``out/psNN.zip``; refuses (ValueError) when the leak gate finds anything."""
-    files = members(ps, root, unconfined)
+    files = members(ps, root, unconfined, roster)
     hits = leak_check(files, root)
     if hits:
         raise ValueError(f"{ps}: the leak gate found solutions in the zip: {hits[:5]}")
@@ -184,6 +200,7 @@ def main(argv=None):
         action="store_true",
         help="run submissions even where bubblewrap cannot confine them (docs/grading.md)",
     )
+    parser.add_argument("--roster", help="the course's roster CSV (docs/variants.md)")
     args = parser.parse_args(argv)
     found = sorted(p.name[:4] for p in (ROOT / "problem_sets").glob("ps[0-9][0-9]_*.ipynb"))
     sets = args.sets or found
@@ -192,7 +209,7 @@ def main(argv=None):
             parser.error(f"no problem set {ps!r}; there are {', '.join(found)}")
     try:
         for ps in sets:
-            path = build_zip(ps, args.out, unconfined=args.unconfined)
+            path = build_zip(ps, args.out, unconfined=args.unconfined, roster=args.roster)
             print(f"{path}: {path.stat().st_size // 1024} kB, leak gate: 0 hits outside SECRET")
     except (OSError, ValueError) as err:
         print(f"make gradescope: {err}", file=sys.stderr)

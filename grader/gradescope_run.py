@@ -35,13 +35,19 @@ submission is not run and run_autograder exits 1, unless the zip was built with
 ``--unconfined`` (file ``source/UNCONFINED``): then students' code runs as root in the
 grading container, which holds the solutions (docs/grading.md).
 
-The student: ``users[0]`` of ``<root>/submission_metadata.json``, its ``sid``, else its
-``email``, else its ``id`` (:func:`student_id`); it is the nbgrader student id of the graded
-submission, so every preprocessor sees it as ``resources["nbgrader"]["student"]``.
+The student: ``users[0]`` of ``<root>/submission_metadata.json``: its ``email``, ``sid`` or
+``id``, whichever the course's roster (``source/roster.csv``, in the zip when built with
+``ROSTER=``) knows, resolved to the course's key (:func:`identity`, :mod:`grader.identity`);
+without a roster, the e-mail, normalised. The nbgrader student id of the graded copy is that
+key made a folder name, and ``course/submission-id.csv`` maps it back to the key, so every
+preprocessor grades the key's numbers. ``results.json`` says whose numbers were graded when
+the notebook showed others or the roster does not know the student, and carries it in
+``extra_data["identity"]`` for the instructor.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import re
@@ -62,8 +68,20 @@ VISIBILITY = "visible"
 UNCONFINED_FLAG = "UNCONFINED"
 SOURCE = Path(__file__).resolve().parents[1]
 HINT = "The check said: "  # grader.preprocessor.HINT (not imported: nbgrader is slow to load)
+ROSTER = "roster.csv"  # the instructor's roster in the zip (source/), when there is one
+SUBMISSION_ID = "submission-id.csv"  # this run's folder name -> the course's key
+NOTE = "**GradingNote**: "  # the first cell of an autograded notebook with an identity note
 
-__all__ = ["student_id", "results_for", "failure", "grade", "prepare", "selftest", "main"]
+__all__ = [
+    "identity",
+    "student_id",
+    "results_for",
+    "failure",
+    "grade",
+    "prepare",
+    "selftest",
+    "main",
+]
 
 
 def root():
@@ -71,28 +89,61 @@ def root():
     return Path(os.environ.get(ROOT_ENV) or DEFAULT_ROOT)
 
 
+def _safe(value):
+    """A folder name of nbgrader's for an id: letters, digits and ``_.@+-``, at most 80; an id
+    that had to be changed gets 8 hex digits of its hash (two such ids stay two folders)."""
+    value = str(value)
+    text = re.sub(r"[^A-Za-z0-9_.@+-]", "_", value)[:80].strip("._")
+    if text != value:
+        text = f"{text}-{hashlib.sha256(value.encode()).hexdigest()[:8]}".lstrip("-")
+    return text
+
+
+def _aliases(metadata):
+    """The ids Gradescope gives of the submission's student: ``users[0]``'s ``email``, then
+    ``sid``, then ``id`` (the non-empty ones)."""
+    users = metadata.get("users") if isinstance(metadata, dict) else None
+    user = users[0] if isinstance(users, list) and users and isinstance(users[0], dict) else {}
+    return [str(user[k]) for k in ("email", "sid", "id") if user.get(k) not in (None, "")]
+
+
+def identity(metadata, roster):
+    """The :class:`grader.identity.Resolved` key of the submission's student: the first of
+    its e-mail, ``sid`` and ``id`` that the roster knows, else the e-mail (or the first id
+    there is) as given, normalised, with a note when there is a roster.
+
+    Examples
+    --------
+    >>> from grader.identity import Roster
+    >>> r = Roster({"3031042": "alice@b.edu", "alice@b.edu": "alice@b.edu"}, ["roster.csv"])
+    >>> identity({"users": [{"sid": "3031042", "email": "Alice@old.edu"}]}, r).key
+    'alice@b.edu'
+    >>> identity({"users": [{"email": " Bob@B.edu"}]}, Roster()).key
+    'bob@b.edu'
+    """
+    names = _aliases(metadata)
+    for name in names:
+        got = roster.resolve(name)
+        if got.how == "roster":
+            return got
+    return roster.resolve(names[0] if names else "unknown-student")
+
+
 def student_id(metadata):
-    """The student of a submission from Gradescope's ``submission_metadata.json`` (a dict):
-    ``users[0]``'s ``sid``, else ``email``, else ``id``, as an nbgrader student id.
+    """The nbgrader student id (a folder name) of a submission from Gradescope's
+    ``submission_metadata.json`` (a dict): its e-mail, else ``sid``, else ``id``, made safe.
 
     Examples
     --------
     >>> student_id({"users": [{"sid": "3031 42", "email": "a@b.edu", "id": 7}]})
-    '3031_42'
-    >>> student_id({"users": [{"email": "a@b.edu", "id": 7}]})
     'a@b.edu'
+    >>> student_id({"users": [{"sid": "3031 42", "id": 7}]})
+    '3031_42-0a048622'
     >>> student_id({})
     'unknown-student'
     """
-    users = metadata.get("users") if isinstance(metadata, dict) else None
-    user = users[0] if isinstance(users, list) and users and isinstance(users[0], dict) else {}
-    for key in ("sid", "email", "id"):
-        value = user.get(key)
-        if value not in (None, ""):
-            text = re.sub(r"[^A-Za-z0-9_.@+-]", "_", str(value))[:80].strip("._")
-            if text:
-                return text
-    return "unknown-student"
+    names = _aliases(metadata)
+    return _safe(names[0]) if names else "unknown-student"
 
 
 def assignment(source=SOURCE):
@@ -124,6 +175,8 @@ def prepare(top=None):
         shutil.rmtree(course)
     ps, _ = assignment()
     write_course(course, root=SOURCE)
+    with open(course / "nbgrader_config.py", "a", encoding="utf-8") as f:  # one student a run
+        f.write(f"c.CourseIdentity.rosters = [{str(course / SUBMISSION_ID)!r}]\n")
     done = subprocess.run(
         [_nbgrader(), "generate_assignment", ps, "--create"],
         cwd=course,
@@ -219,16 +272,47 @@ def results_for(course, ps, student, started):
         )
     total = sum(t["score"] for t in tests)
     most = sum(t["max_score"] for t in tests)
+    output = f"{ps}: {total:g} of {most:g} points, graded by the course's grader."
+    note = _identity_note(autograded)
+    if note:
+        output += f"\n\nYour student id: {note}"
     return {
         "score": total,
         "execution_time": round(time.monotonic() - started, 1),
-        "output": f"{ps}: {total:g} of {most:g} points, graded by the course's grader.",
+        "output": _short(output),
         "output_format": "text",
         "test_output_format": "text",
         "visibility": VISIBILITY,
         "stdout_visibility": "hidden",
         "tests": tests,
+        "extra_data": {"identity": _identity_data(course, ps, student)},
     }
+
+
+def _identity_note(autograded):
+    """The identity note VerifyRecords put first in the autograded notebook, or ''."""
+    if autograded is None:
+        return ""
+    import nbformat
+
+    cells = nbformat.read(autograded, as_version=4).cells
+    first = cells[0] if cells else None
+    if first is not None and first.cell_type == "markdown" and first.source.startswith(NOTE):
+        return first.source[len(NOTE) :]
+    return ""
+
+
+def _identity_data(course, ps, student):
+    """The row of the course's identity report for this submission, or the plain key."""
+    import csv
+
+    report = course / "identity-report.csv"
+    if report.is_file():
+        with open(report, newline="", encoding="utf-8") as f:
+            for row in csv.DictReader(f):
+                if (row["assignment"], row["student"]) == (ps, student):
+                    return row
+    return {"assignment": ps, "student": student}
 
 
 class GraderFault(RuntimeError):
@@ -305,6 +389,7 @@ def grade(top=None, course=None):
 
 
 def _grade(top, started, budget, course):
+    from grader.identity import load
     from grader.intake import Refused
 
     ps, expected = assignment()
@@ -315,7 +400,14 @@ def _grade(top, started, budget, course):
             metadata = json.loads(meta_path.read_text())
         except ValueError:
             metadata = {}
-    student = student_id(metadata)
+    roster_file = SOURCE / ROSTER
+    try:
+        who = identity(metadata, load([roster_file] if roster_file.is_file() else []))
+    except ValueError as err:  # the instructor's roster cannot be trusted: nothing on a guess
+        raise GraderFault(f"the course's roster is refused ({err})") from err
+    student = _safe(who.key)
+    rows = _csv_row(["key", "alias"]) + _csv_row([who.key, student])
+    (course / SUBMISSION_ID).write_text(rows, encoding="utf-8")
     try:
         data, note = _intake(top, expected)
     except Refused as err:
@@ -339,7 +431,10 @@ def _grade(top, started, budget, course):
     results = results_for(course, ps, student, started)
     if note:
         results["output"] += " " + note
-    results["extra_data"] = {"confinement": name, "student": student}
+    results["extra_data"]["confinement"] = name
+    results["extra_data"]["identity"].update(given=who.given, graded_as=who.key, how=who.how)
+    if who.note:
+        results["output"] = _short(f"{results['output']}\n\nYour student id: {who.note}")
     return results
 
 
@@ -371,6 +466,15 @@ def selftest(top=None):
             )
         print(f"self-test: the {kind} copy got {results['score']:g} of {most:g} points")
     return True
+
+
+def _csv_row(cells):
+    import csv
+    import io
+
+    buf = io.StringIO()
+    csv.writer(buf).writerow(cells)
+    return buf.getvalue()
 
 
 def main(argv=None):

@@ -44,10 +44,14 @@ from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
 from . import intake
+from .id_preprocessors import SHOWN, CourseIdentity, ShownNumbers, shown_phrase
+from .identity import RosterError, write_report
 from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
-from .verify import verdict
+from .verify import student_parameters, verdict
 
 __all__ = [
+    "CourseIdentity",
+    "ShownNumbers",
     "ConfinedExecute",
     "ConfinedExporter",
     "VerifyRecords",
@@ -89,6 +93,11 @@ class ConfinedExporter(NotebookExporter):
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
+        try:  # a roster that cannot be trusted stops the run before anything is graded
+            CourseIdentity(config=self.config).roster()
+        except (OSError, RosterError) as err:
+            self.log.error("%s: nothing was graded", err)
+            raise NbGraderException(f"{err}: nothing was graded") from None
         problem = confinement_problem()
         if ConfinedKernelManager.unconfined_in(self.config):
             self.log.warning(
@@ -144,9 +153,10 @@ class ConfinedExecute(Execute):
         # messages, a flood of 1 MB writes held up to 1 GB in the grader (483 MB for a 6 s flood
         # on a loaded machine). Past IOPUB_QUEUE waiting messages the socket drops them.
         km.context.setsockopt(zmq.RCVHWM, IOPUB_QUEUE)
-        # the student of the submission, from nbgrader (never from the notebook): the kernel's
-        # checks then judge that student's own exercise variants, as VerifyRecords does
-        km.student = (self.resources or {}).get("nbgrader", {}).get("student") or ""
+        # the student of the submission, from nbgrader (never from the notebook), as the course's
+        # key (the roster): the kernel's checks judge that student's variants, as VerifyRecords
+        given = (self.resources or {}).get("nbgrader", {}).get("student") or ""
+        km.student = CourseIdentity(config=self.config).roster().resolve(given).key
         return km
 
     def _start_cell(self, index):
@@ -282,7 +292,56 @@ def _records(cell):
 
 
 class VerifyRecords(NbGraderPreprocessor):
-    """Each exercise check cell keeps its points only on the grader's "correct"."""
+    """Each exercise check cell keeps its points only on the grader's "correct".
+
+    The student is nbgrader's student id resolved to the course's key by the roster
+    (:class:`~grader.id_preprocessors.CourseIdentity`). Where the submitted notebook showed
+    other numbers than the key's (:class:`~grader.id_preprocessors.ShownNumbers`), the feedback
+    says so at the top and in each exercise concerned, and the student is listed in the
+    instructor's identity report (a regrade, not a silent 0); an id the roster does not know is
+    graded as given, with a note, and listed too."""
+
+    def preprocess(self, nb, resources):
+        ident = CourseIdentity(config=self.config)
+        info = resources.get("nbgrader", {})
+        self._who = ident.roster().resolve(info.get("student") or "")
+        shown = nb.metadata.get(SHOWN)
+        self._shown = shown if isinstance(shown, dict) else {}
+        self._other, self._lost = [], []
+        nb, resources = super().preprocess(nb, resources)
+        lines = [self._who.note] if self._who.note else []
+        if self._other:
+            lines.append(self.mismatch_note())
+        if lines:
+            nb.cells.insert(0, nbformat.v4.new_markdown_cell("**GradingNote**: " + " ".join(lines)))
+        if "assignment" in info and "student" in info:
+            row = None
+            if lines:
+                row = {
+                    "assignment": info["assignment"],
+                    "student": info["student"],
+                    "graded_as": self._who.key,
+                    "how": self._who.how,
+                    "shown_as": "; ".join(
+                        sorted({str(self._shown[n].get("student")) for n in self._other})
+                    ),
+                    "other_numbers": " ".join(self._other),
+                    "lost": " ".join(self._lost),
+                }
+            write_report(ident.report_path(resources), info["assignment"], info["student"], row)
+        return nb, resources
+
+    def mismatch_note(self):
+        """The feedback's line on the exercises whose numbers were not the graded ones."""
+        first = self._shown[self._other[0]]
+        lost = f" Points lost on them: {', '.join(self._lost)}." if self._lost else ""
+        return (
+            f"your answers were graded on the numbers of {self._who.key!r}, your course id, but "
+            f"your notebook showed the {shown_phrase(first)} in {', '.join(self._other)}.{lost} "
+            "Set your student id (your course e-mail) in the first cell of the problem set, "
+            "check those answers on your own numbers and hand in again, or ask your "
+            "instructor for a regrade: you are on their list."
+        )
 
     def preprocess_cell(self, cell, resources, cell_index):
         if cell.cell_type != "code" or not utils.is_grade(cell):
@@ -301,8 +360,13 @@ class VerifyRecords(NbGraderPreprocessor):
             note = "no answer record" if not records else f"{len(records)} answer records"
             cell.outputs = [note_output(f"{name}: 0 points: {note} in the check cell's output.")]
             return cell, resources
-        student = resources.get("nbgrader", {}).get("student")  # nbgrader's, not the notebook's
-        result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])), student)
+        key = self._who.key  # nbgrader's student through the roster, never the notebook's
+        shown = self._shown.get(name)
+        result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])), key, shown)
+        if isinstance(shown, dict) and shown.get("variant") != student_parameters(name, key)[0]:
+            self._other.append(name)
+            if not result.ok:
+                self._lost.append(name)
         if not result.ok:
             note = note_output(f"{name}: 0 points from the grader: {result.note}.")
             hint = _hint(cell)

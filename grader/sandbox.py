@@ -97,8 +97,9 @@ BOOT = (
 
 def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
     """The kernel's whole environment (``work``: its working directory and ``HOME``;
-    ``student``: the nbgrader student id, as ``COURSE_STUDENT_ID``, so that the submission's
-    own checks use that student's exercise variants, as the grader does)."""
+    ``student``: the course's key of the submission's student, as ``COURSE_GRADER_ID``, so
+    that the submission's own checks use that student's exercise variants, as the grader does,
+    whatever id the notebook sets)."""
     env = {
         "PATH": f"{prefix}/bin:/usr/bin:/bin",
         "LANG": "C.UTF-8",
@@ -110,8 +111,8 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
         "JUPYTER_RUNTIME_DIR": f"{work}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
     }
-    if student:
-        env["COURSE_STUDENT_ID"] = student
+    if student:  # the grader's id wins over the notebook's set_student_id (course_lib._identity)
+        env["COURSE_GRADER_ID"] = student
     return env
 
 
@@ -253,8 +254,8 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
             "and change whatever you can (the solutions, the gradebook). Only for a machine "
             "without bubblewrap, and work you trust (docs/grading.md).",
         ).tag(config=True)
-        #: nbgrader's student id of the submission (set by ConfinedExecute): the kernel's
-        #: ``COURSE_STUDENT_ID``, so the submission's checks use that student's variants.
+        #: The course's key of the submission's student (set by ConfinedExecute): the kernel's
+        #: ``COURSE_GRADER_ID``, so the submission's checks use that student's variants.
         student = Unicode("")
 
         @classmethod

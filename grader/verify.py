@@ -214,6 +214,27 @@ def _judge(ex, data, index):
     return Verdict("correct", "correct")
 
 
+def _wrong_note(note, index, student, shown, data):
+    """The note of a wrong answer on a variant: whose numbers were graded, and, when the
+    notebook showed others, which and how to fix the id (a note only: points never use it)."""
+    note = f"{note}, for this student's numbers (those of {student!r}, variant {index})"
+    shown = shown if isinstance(shown, dict) else {"variant": data.get("variant")}
+    used = shown.get("variant")
+    if type(used) is int and used != index:
+        who = shown.get("student")
+        if used == 0 and not who or who == "(example)":
+            whose = "the example numbers (no student id was set)"
+        elif isinstance(who, str) and who:
+            whose = f"the numbers of the id {who!r} (variant {used})"
+        else:
+            whose = f"the numbers of variant {used}"
+        note += (
+            f"; your notebook showed {whose}: set your student id to your course e-mail in the "
+            "first cell and check this answer on your own numbers, or ask for a regrade"
+        )
+    return note
+
+
 class _TimeUp(Exception):
     pass
 
@@ -236,14 +257,17 @@ def _deadline(seconds):
         signal.signal(signal.SIGALRM, old)
 
 
-def verdict(name, data, student=None):
+def verdict(name, data, student=None, shown=None):
     """The grader's :class:`Verdict` on the record ``data`` (a dict) of exercise ``name``,
-    handed in by ``student`` (the nbgrader student id; None or "": the default numbers).
+    handed in by ``student`` (the course's key of the submission's student; None or "": the
+    default numbers).
 
     An exercise with variants is re-checked against that student's own parameters: an answer
-    to another student's numbers is wrong. A record of another exercise, of an unknown
-    layout, or that the whitelist refuses is not correct; nothing of the record is ever
-    evaluated as code.
+    to another student's numbers is wrong. ``shown``: which numbers the submitted notebook
+    showed (``{"variant": k, "student": id}``, from its own run; default: the record's), only
+    for the note of a wrong answer, never for the points. A record of another exercise, of an
+    unknown layout, or that the whitelist refuses is not correct; nothing of the record is
+    ever evaluated as code.
     """
     if name not in EXERCISES:
         return Verdict("unknown", f"no exercise called {name!r}")
@@ -256,12 +280,7 @@ def verdict(name, data, student=None):
             index, _ = student_parameters(name, student)
             result = _judge(EXERCISES[name], data, index)
             if index and result.status == "wrong":
-                note = f"{result.note}, for this student's numbers (variant {index})"
-                used = data.get("variant")
-                if type(used) is int and used != index:  # only a note: points never use it
-                    why = " (no student id was set)" if used == 0 else ""
-                    note += f"; the notebook showed the numbers of variant {used}{why}"
-                return Verdict("wrong", note)
+                return Verdict("wrong", _wrong_note(result.note, index, student, shown, data))
             return result
     except Unreadable as err:
         return Verdict("forged", str(err))

@@ -29,7 +29,8 @@ The gate then reads every file of the student edition's work tree, every blob an
 message of its whole git history, every member of each wheel and every file of the website
 (HTML also with its tags taken out, JSON and notebooks also by their strings) and fails on:
 a needle found (naming the file, the line and where the solution comes from), a line with
-one of nbgrader's markers, and a folder named ``solutions``.
+one of nbgrader's markers, a folder named ``solutions``, and a class roster (a file named
+``roster*``, or a CSV with a Canvas gradebook's header): students' ids stay with the instructor.
 
 Command line: ``python release/leak_gate.py ROOT STUDENT_DIR DIST_DIR SITE_DIR`` (exit 1 on
 any hit, listing up to 50).
@@ -54,6 +55,7 @@ PUNCTUATION = re.compile(r"^[\s()\[\]{},:;]*$")
 PREFILL = re.compile(r"^answer_\w+\s*=\s*None$")
 ANSWER_RHS = re.compile(r"^answer_\w+\s*=\s*(.+)$")
 SOLUTION_DIRS = {"solutions", "solution"}
+ROSTER_HEADER = re.compile(r"^\ufeff?\"?Student\"?,.*\bSIS (User|Login) ID\b", re.M)
 _TAG = re.compile(r"<[^>]+>")
 
 
@@ -218,9 +220,22 @@ def _right_records(text):
             yield m.start()
 
 
+def _roster(name, data):
+    """Whether a file looks like a class roster (grader/identity.py): a file named roster*, or
+    a CSV with a Canvas gradebook's identity header. Students never get one."""
+    base = name.replace("\\", "/").rsplit("/", 1)[-1].lower()
+    if base.startswith("roster"):
+        return True
+    head = data[:4096].decode("utf-8", "replace")
+    return base.endswith(".csv") and bool(ROSTER_HEADER.search(head))
+
+
 def scan_data(name, data, needles, report):
-    """Search one file's bytes; append a hit per needle or marker found, one per line."""
+    """Search one file's bytes; append a hit per needle or marker found, one per line, and
+    one for a class roster."""
     report.bytes += len(data)
+    if _roster(name, data):
+        report.hits.append(f"{name}: a class roster (students' ids): it stays with the instructor")
     seen = set()
     outputs = name.endswith((".ipynb", ".html"))  # where notebook outputs are stored or shown
     for text in _texts(name, data):

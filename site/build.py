@@ -233,7 +233,7 @@ def build(solutions=False, student_dir=None, out=None):
         )
     for path in paths:
         nb = prepare(nbformat.read(path, as_version=4), path.name, url)
-        seconds = nbtool.execute(nb, cwd)
+        seconds = nbtool.execute(nb, cwd, student="(example)" if solutions else None)
         nbformat.write(finish(nb), path)
         print(f"{path.name}: executed in {seconds:.1f} s")
     write_index(src, [p.name for p in paths], solutions, url)

@@ -64,8 +64,9 @@ def test_a_new_problem_set_is_stable_and_valid():
     once = _fresh(4)
     twice = sync.sync_problem_set(copy.deepcopy(once), 4)
     assert _writes(once) == _writes(twice)
-    # each exercise: statement, answer, check; one with variants also the cell showing its numbers
-    assert len(once.cells) == 3 + sum(3 + (ex.variants is not None) for ex in exercises(4))
+    # each exercise: statement, answer, check; one with variants also the cell showing its numbers;
+    # the head: title, the student id (its text and its cell), how the exercises work, set-up
+    assert len(once.cells) == 5 + sum(3 + (ex.variants is not None) for ex in exercises(4))
     assert once.cells[0].source.startswith("# Problem set 4 · Working with Rotations")
     nbformat.validate(once)
 
@@ -73,6 +74,7 @@ def test_a_new_problem_set_is_stable_and_valid():
 @pytest.mark.parametrize("chapter", CHAPTERS)
 def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chapter):
     nb = _fresh(chapter)
+    nb.cells = [c for c in nb.cells if sync.ID_META not in c.metadata]  # the student's own cell
     metas = [c.metadata["nbgrader"] for c in nb.cells]
     ids = [m["grade_id"] for m in metas]
     assert len(set(ids)) == len(ids)
@@ -94,6 +96,27 @@ def test_cells_carry_nbgrader_metadata_points_by_level_and_unique_grade_ids(chap
             continue
         for word in MARKER_WORDS:  # nbgrader matches them anywhere in a line
             assert word not in cell.source.upper()
+
+
+@pytest.mark.parametrize("chapter", CHAPTERS)
+def test_the_student_id_comes_first_editable_and_lists_the_statements(chapter):
+    """Issue 33/37: the problem set's first cells say how to set the id, set or ask for it, and
+    show every statement with the student's numbers before any answer cell can stop Run All."""
+    nb = _fresh(chapter)
+    ids = [c.get("id") for c in nb.cells]
+    title, text, cell = nb.cells[:3]
+    assert ids[:3] == [
+        f"ps{chapter}-title",
+        f"ps{chapter}-student-id",
+        f"ps{chapter}-student-id-cell",
+    ]
+    assert "student id" in title.source and text.source == sync.ID_INTRO
+    for platform in ("laptop, Binder or Colab", "JupyterHub", "Gradescope or nbgrader"):
+        assert platform in text.source
+    assert cell.cell_type == "code" and "nbgrader" not in cell.metadata  # students edit it
+    assert 'set_student_id("")' in cell.source and f"your_numbers({chapter})" in cell.source
+    first_answer = next(i for i, c in enumerate(nb.cells) if c.get("id", "").endswith("-answer"))
+    assert ids.index(f"ps{chapter}-student-id-cell") < first_answer
 
 
 @pytest.mark.parametrize("chapter", CHAPTERS)

@@ -20,6 +20,7 @@ K = 64
 def _no_ambient_id(monkeypatch):
     monkeypatch.delenv(V.ENV_ID, raising=False)
     monkeypatch.delenv(V.HUB_ID, raising=False)
+    monkeypatch.delenv(V.GRADER_ID, raising=False)
     set_student_id(None)
     yield
     set_student_id(None)
@@ -52,7 +53,7 @@ def test_no_id_or_only_white_space_is_the_default_variant():
         assert variant_index("angle_from_trace", K, raw if raw is not None else "") == 0
     assert variant_index("angle_from_trace", K) == 0  # this kernel: no id set
     assert "No student id is set" in identity_line()
-    assert "set_student_id" in identity_line() and V.ENV_ID in identity_line()
+    assert "set_student_id" in identity_line() and "JupyterHub" in identity_line()
 
 
 def test_spelling_of_case_white_space_and_unicode_width_does_not_change_the_variant():
@@ -73,7 +74,7 @@ def test_a_class_spreads_over_the_table_and_exercises_vary_independently():
     assert same < 3 * 1000 / K  # the two exercises' variants are not the same index
 
 
-def test_precedence_setter_then_course_variable_then_hub_user(monkeypatch):
+def test_precedence_grader_then_setter_then_course_variable_then_hub_user(monkeypatch):
     monkeypatch.setenv(V.HUB_ID, "hub-user")
     assert student_id() == ("hub-user", V.HUB_ID)
     monkeypatch.setenv(V.ENV_ID, "Code-17")
@@ -82,6 +83,8 @@ def test_precedence_setter_then_course_variable_then_hub_user(monkeypatch):
     assert student_id() == ("given", "set_student_id")
     assert variant_index("x", K) == variant_index("x", K, "given")
     assert "given" in identity_line()
+    monkeypatch.setenv(V.GRADER_ID, "Graded")  # the grading kernel: the notebook cannot change it
+    assert student_id() == ("graded", V.GRADER_ID)
 
 
 def test_bad_arguments_say_what_was_wrong():

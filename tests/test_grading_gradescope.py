@@ -22,6 +22,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "release"))
+sys.path.insert(0, str(ROOT / "tests"))
 import leak_gate  # noqa: E402
 
 from grader import gradescope  # noqa: E402
@@ -59,8 +60,9 @@ def notebook(top, kind):
     return path.name, nbformat.read(path, as_version=4)
 
 
-def run_autograder(top, student, nb=None, raw=None, name=None):
-    """Hand in ``nb`` (or the bytes ``raw``) as ``student``; run run_autograder; its results."""
+def run_autograder(top, student, nb=None, raw=None, name=None, meta=None):
+    """Hand in ``nb`` (or the bytes ``raw``) as ``student`` (or the Gradescope user ``meta``);
+    run run_autograder; its results."""
     sub = top / "submission"
     for old in sub.glob("*"):
         old.unlink()
@@ -70,8 +72,8 @@ def run_autograder(top, student, nb=None, raw=None, name=None):
         (sub / filename).write_bytes(raw)
     else:
         nbformat.write(nb, sub / filename)
-    meta = {"users": [{"sid": student, "email": f"{student}@example.edu", "id": 1}]}
-    (top / "submission_metadata.json").write_text(json.dumps(meta))
+    meta = meta or {"sid": student, "email": f"{student}@example.edu", "id": 1}
+    (top / "submission_metadata.json").write_text(json.dumps({"users": [meta]}))
     results = top / "results" / "results.json"
     if results.exists():
         results.unlink()
@@ -235,7 +237,7 @@ def test_student_code_sees_no_autograder_file_and_cannot_write_results(autograde
     attack = ATTACK.format(top=str(autograder), results=str(autograder / "results"))
     results = run_autograder(autograder, "s_attack", _prefix_first_answer(nb, attack))
     assert results["score"] == 0 and "pwned" not in json.dumps(results), results
-    graded = autograder / "course" / "autograded" / "s_attack" / PS
+    graded = autograder / "course" / "autograded" / "s_attack@example.edu" / PS  # the e-mail
     text = next(graded.glob("*.ipynb")).read_text()
     seen = text.split("SEEN ", 1)[1].split("\\n", 1)[0]
     # in view: the installed course_lib only (what students have anyway), here the zip's copy
@@ -248,11 +250,44 @@ def test_student_code_sees_no_autograder_file_and_cannot_write_results(autograde
     no_leak(results)
 
 
+def test_one_key_per_student_with_the_roster_in_the_zip(autograder, monkeypatch):
+    """Issue 33, the Gradescope path of tests/test_grading_identity.py: the roster in the zip
+    (source/roster.csv, read at grading time), alice7's notebook worked on her laptop id
+    "Alice7@Example.EDU " and handed in under her e-mail in capitals and her sid: 14 of 14.
+    bob9 worked as the bare hub user "bob9": graded on his key's numbers, results.json says so
+    and carries his row for the instructor."""
+    from test_grading_identity import ROSTER, WORKED_AS, differs, worked_copy
+
+    source = next((autograder / "course" / "source" / PS).glob("*.ipynb"))
+    roster = autograder / "source" / "roster.csv"
+    roster.write_text(ROSTER)
+    try:
+        alice_nb, bob_nb = (
+            worked_copy(source, WORKED_AS[s], monkeypatch) for s in ("alice7", "bob9")
+        )
+        alice = run_autograder(
+            autograder, "", alice_nb, meta={"email": "ALICE7@example.edu", "sid": "3031042"}
+        )
+        bob = run_autograder(autograder, "", bob_nb, meta={"email": "Bob9@Example.edu"})
+    finally:
+        roster.unlink()
+    assert alice["score"] == TOTAL, alice["output"]
+    assert alice["extra_data"]["identity"]["graded_as"] == "alice7@example.edu"
+    assert alice["extra_data"]["identity"]["how"] == "roster"
+    assert "Your student id" not in alice["output"]
+    lost = differs("bob9", "bob9@example.edu")
+    assert bob["score"] == TOTAL - sum(ex.points for ex in lost)
+    assert "graded on the numbers of 'bob9@example.edu'" in bob["output"]
+    assert set(bob["extra_data"]["identity"]["lost"].split()) == {ex.name for ex in lost}
+    no_leak(alice)
+    no_leak(bob)
+
+
 def test_student_id_from_metadata():
     assert student_id({"users": [{"sid": "", "email": "x@y.edu"}]}) == "x@y.edu"
     assert student_id({"users": [{"id": 12}]}) == "12"
-    assert student_id({"users": [{"sid": "../../etc"}]}) == "etc"  # never a path
-    assert student_id({"users": [{"sid": ".."}]}) == "unknown-student"
+    assert student_id({"users": [{"sid": "../../etc"}]}).startswith("etc-")  # never a path
+    assert "/" not in student_id({"users": [{"sid": ".."}]}) != ".."
     assert student_id("not a dict") == "unknown-student"
 
 

@@ -150,6 +150,8 @@ def test_the_student_readme_covers_every_way_in_and_the_round_trip(built):
         "problem set",
         "Hand it in",
         "make test",
+        "Your student id",
+        'set_student_id("',
     ):
         assert words in readme, words
     assert "@" not in readme.replace("user.email", ""), "a placeholder left in the README"
@@ -294,6 +296,16 @@ def test_planted_markers_and_a_solutions_folder_are_found(copy, needles):
     hits = _gate(copy / "student", copy / "dist", copy / "site", needles)
     assert any("notebooks/x.ipynb" in h and "'BEGIN SOLUTION'" in h for h in hits), hits
     assert any(h == "site/solutions: a solutions folder" for h in hits), hits
+
+
+def test_a_class_roster_in_the_edition_is_found(copy, needles):
+    """Issue 33: the roster maps every student's ids; it stays with the instructor."""
+    export = 'Student,ID,SIS User ID,SIS Login ID,Section\n"Seven, Alice",1,3031042,alice7,A\n'
+    (copy / "student" / "problem_sets" / "class.csv").write_text(export)
+    (copy / "site" / "roster.csv").write_text("alice7@example.edu,alice7\n")
+    hits = _gate(copy / "student", copy / "dist", copy / "site", needles)
+    assert any(h.startswith("student/problem_sets/class.csv: a class roster") for h in hits), hits
+    assert any(h.startswith("site/roster.csv: a class roster") for h in hits), hits
 
 
 def test_the_command_line_fails_and_lists_the_hits(copy, needles, capsys):

@@ -204,8 +204,25 @@ def _client_class():
     return Client
 
 
-def execute(nb, cwd):
-    """Run every cell of ``nb`` in a fresh kernel started in ``cwd``; return the seconds."""
+#: The kernel's student id: the course's example numbers (course_lib.exercises._identity),
+#: whatever id the instructor's own shell or hub sets, so the stored outputs are the same for all.
+EXAMPLE_ID = "(example)"
+
+
+def _kernel_id(student):
+    import os
+
+    for var in ("JUPYTERHUB_USER", "COURSE_GRADER_ID", "COURSE_STUDENT_ID"):
+        os.environ.pop(var, None)
+    if student:
+        os.environ["COURSE_STUDENT_ID"] = student
+
+
+def execute(nb, cwd, student=EXAMPLE_ID):
+    """Run every cell of ``nb`` in a fresh kernel started in ``cwd``, as ``student`` (default
+    the example student; None: no id, as a student's page on the site shows it); return the
+    seconds."""
+    _kernel_id(student)
     client = _client_class()(
         nb,
         timeout=CELL_TIMEOUT,

@@ -1,10 +1,11 @@
 """What one student's problem set asks and its answers (instructor side: it runs the solutions).
 
-    python tools/show_variant.py STUDENT psNN     # make variant STUDENT=id PS=psNN
+    python tools/show_variant.py STUDENT psNN [--roster R]  # make variant STUDENT=id PS=psNN
 
 For each exercise of the problem set with variants: the variant the student gets (the same id
-the grader is given: the nbgrader student id, the JupyterHub user or the handed-out code), the
-statement with that student's numbers, and the reference answer for them. With variants off
+the grader is given: the nbgrader student id, the JupyterHub user or the e-mail, resolved to
+the course's key by the roster when one is given, as the grader does), the statement with that
+student's numbers, and the reference answer for them. With variants off
 (``tools/variant_tables.py --off``) every student gets variant 0 and it says so.
 """
 
@@ -23,14 +24,17 @@ for path in (ROOT, ROOT / "tools"):
         sys.path.insert(0, str(path))
 
 from course_lib.exercises import exercises, variant, variants_enabled  # noqa: E402
-from course_lib.exercises._variants import normalise_id  # noqa: E402
+from grader.identity import load  # noqa: E402
 from grader.verify import expected  # noqa: E402
 
 
-def report(student, chapter):
-    """The lines of the report for ``student`` and the problem set of ``chapter``."""
+def report(student, chapter, roster=()):
+    """The lines of the report for ``student`` (an id, resolved to the course's key with the
+    roster files ``roster``) and the problem set of ``chapter``."""
     state = "on" if variants_enabled() else "off (everyone gets variant 0)"
-    lines = [f"student {normalise_id(student)!r}, problem set {chapter}; variants {state}"]
+    who = load(list(roster)).resolve(student)
+    student = who.key
+    lines = [f"student {student!r} ({who.how}), problem set {chapter}; variants {state}"]
     varied = [ex for ex in exercises(chapter) if ex.variants is not None]
     if not varied:
         lines.append("no exercise of this problem set has variants")
@@ -47,12 +51,13 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("student", help="the student id (as nbgrader knows it)")
     parser.add_argument("ps", help="the problem set: ps01 ... ps05 (or 1 ... 5)")
+    parser.add_argument("--roster", help="the course's roster CSV (grader/identity.py)")
     args = parser.parse_args(argv)
     m = re.fullmatch(r"(?:ps)?0*([1-9][0-9]*)", args.ps.strip())
     if not m:
         parser.error(f"PS must name a problem set as ps01 ... ps05, got {args.ps!r}")
     try:
-        print("\n".join(report(args.student, int(m.group(1)))))
+        print("\n".join(report(args.student, int(m.group(1)), [args.roster] * bool(args.roster))))
     except ValueError as err:
         parser.error(str(err))
     return 0

@@ -104,6 +104,44 @@ def _title(chapter):
         f"# Problem set {chapter} · {chapter_title(chapter)}\n\n"
         f"The graded exercises of chapter {chapter} ([{chap}](../notebooks/{chap})): "
         f"{_tally(chapter)}. Read the chapter first; every exercise uses only what it shows."
+        + (
+            " Start with your student id (next section): some exercises give every student "
+            "numbers of their own."
+            if _varied(chapter)
+            else ""
+        )
+    )
+
+
+def _varied(chapter):
+    return [ex for ex in exercises(chapter) if ex.variants is not None]
+
+
+#: The section on the student id at the top of a problem set with variants (issue 33).
+ID_INTRO = """## Your student id
+
+Some exercises give every student numbers of their own, drawn from your **student id: your
+institutional e-mail address** (unless your instructor names another id). Set it in the cell
+below, once per session, before the exercises:
+
+- **laptop, Binder or Colab**: type your e-mail between the quotes of `set_student_id("")`,
+  then run the cell;
+- **the course's JupyterHub**: nothing to type (leave the quotes empty): your hub user is used;
+- **graded by Gradescope or nbgrader**: the grader uses the id of your submission, whatever
+  this cell says.
+
+The cell then says whose numbers these are and lists every statement with your numbers, so
+that you can read them all before you start. Without an id, no check says ✓. If the numbers
+you worked on were not those of your id, the grader's feedback says so and your instructor
+sees it (a regrade, not a silent 0)."""
+
+
+def _id_source(chapter):
+    """The student-id cell: set the id (students edit the quotes), then the statements."""
+    return (
+        "from course_lib.exercises import set_student_id, your_numbers\n\n"
+        'set_student_id("")  # laptop, Binder, Colab: your e-mail between the quotes; hub: leave\n'
+        f"your_numbers({chapter})"
     )
 
 
@@ -121,7 +159,8 @@ def pointer_source(chapter):
 #: The statement cell of an exercise with variants: its numbers are each student's own.
 OWN_NUMBERS = (
     "In this exercise every student has their own numbers: the cell below shows the statement "
-    "with yours (run it). In the answer cell, `P` holds them, by the names the statement uses."
+    "with yours (run it; the student-id cell at the top lists them too). In the answer cell, "
+    "`P` holds them, by the names the statement uses."
 )
 
 
@@ -183,6 +222,12 @@ def problem_set_cells(chapter):
         ("code", f"ch{chapter}-exercises-setup", bank.SETUP),
     ]
     cells = [(kind, cid, src, nbgrader_metadata(cid, locked=True)) for kind, cid, src in head]
+    if _varied(chapter):  # after the title: the id, and every statement with its numbers
+        md, code = f"ps{chapter}-student-id", f"ps{chapter}-student-id-cell"
+        cells[1:1] = [
+            ("markdown", md, ID_INTRO, nbgrader_metadata(md, locked=True)),
+            ("code", code, _id_source(chapter), {ID_META: True}),  # the student's to edit
+        ]
     for ex in exercises(chapter):
         cells.append(
             (
@@ -217,8 +262,11 @@ def problem_set_cells(chapter):
 # ---------------------------------------------------------------------------------------------
 
 _OWNED_ID = re.compile(
-    r"^(ps\d+-title|ch\d+-exercises(-setup)?|[a-z][a-z0-9_]*-(statement|numbers|answer|check))$"
+    r"^(ps\d+-title|ps\d+-student-id(-cell)?|ch\d+-exercises(-setup)?"
+    r"|[a-z][a-z0-9_]*-(statement|numbers|answer|check))$"
 )
+#: The metadata key of the student-id cell (no nbgrader metadata: students edit it).
+ID_META = "course_student_id"
 
 
 def _owned(cell):
@@ -227,7 +275,8 @@ def _owned(cell):
     A chapter's own cells (ids such as ``angles-check``) and an instructor's cells (random ids)
     are never the tool's, whatever their ids look like.
     """
-    return bool(_OWNED_ID.match(cell.get("id") or "")) and "nbgrader" in cell.get("metadata", {})
+    meta = cell.get("metadata", {})
+    return bool(_OWNED_ID.match(cell.get("id") or "")) and ("nbgrader" in meta or ID_META in meta)
 
 
 def _digest(code):

@@ -79,6 +79,7 @@ from ..symbolic import (
     z,
 )
 from ._check import expected_shape_phrase, judge
+from ._identity import how_to_set_id
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants, format_parameter
 from ._reading import Rejected
 from ._variants import (
@@ -104,6 +105,7 @@ __all__ = [
     "exercises",
     "get",
     "identity_line",
+    "how_to_set_id",
     "names",
     "parameters",
     "set_student_id",
@@ -112,6 +114,7 @@ __all__ = [
     "variant",
     "variant_index",
     "variants_enabled",
+    "your_numbers",
     "A",
     "B",
     "R",
@@ -236,13 +239,71 @@ def variant(name, student=None):
     return replace(ex.filled(shown), name=variant_name(name, k)), k
 
 
+def _needs_id(ex):
+    """Whether exercise ``ex`` has numbers of its own per student and no id is set here."""
+    return ex.variants is not None and variants_enabled() and not student_id()[0]
+
+
+#: Under a statement shown before the student id is set.
+EXAMPLE_NOTE = "*Example numbers, not yours: set your student id at the top of the problem set.*"
+
+
 def show(name):
-    """The statement of exercise ``name`` with this student's numbers, as notebook markdown,
-    under a line saying whose numbers they are (or how to set the student id)."""
+    """The statement of exercise ``name`` with this student's numbers, as notebook markdown
+    (whose numbers they are is said once, at the top of the problem set: :func:`your_numbers`;
+    before an id is set, a line says these are example numbers)."""
     from IPython.display import Markdown
 
     ex, _ = variant(name)
-    return Markdown(f"{ex.statement.strip()}\n\n*{identity_line()}*")
+    note = f"\n\n{EXAMPLE_NOTE}" if _needs_id(get(name)) else ""
+    return Markdown(f"{ex.statement.strip()}{note}")
+
+
+def numbers_text(chapter):
+    """The markdown of :func:`your_numbers`: whose numbers, then every statement of the
+    chapter's exercises with variants, with those numbers (none before an id is set).
+
+    Examples
+    --------
+    >>> set_student_id("Ada@Example.org")
+    >>> print(numbers_text(1).splitlines()[0])  # doctest: +ELLIPSIS
+    Student id: **ada@example.org** (from set_student_id). The exercises show the numbers...
+    >>> set_student_id(None)
+    """
+    varied = [ex for ex in exercises(chapter) if ex.variants is not None]
+    if not varied:
+        return "Every student has the same numbers in this problem set: no student id is needed."
+    if not variants_enabled():
+        head = "Every student has the same numbers in this course (variants are off)."
+    elif not student_id()[0]:
+        return identity_line()
+    else:
+        head = identity_line()
+    parts = [head, "The statements with your numbers (each is shown again above its answer):"]
+    for ex in varied:
+        shown, _ = variant(ex.name)
+        parts.append(f"**Exercise {ex.label} · {ex.title}.** {shown.statement.strip()}")
+    return "\n\n".join(parts)
+
+
+def your_numbers(chapter):
+    """Whose numbers the problem set of ``chapter`` shows, and all its statements with those
+    numbers, so that they can be read before any answer cell runs (notebook markdown: the
+    text of :func:`numbers_text`).
+
+    Examples
+    --------
+    >>> your_numbers(1).data == numbers_text(1)
+    True
+
+    Raises
+    ------
+    ValueError
+        If ``chapter`` is not one of the chapters of the bank.
+    """
+    from IPython.display import Markdown
+
+    return Markdown(numbers_text(chapter))
 
 
 @lru_cache(maxsize=1)
@@ -280,6 +341,9 @@ def check(name, answer):
     ✗ which_are_rigid: that is not the right set of letters. Hint: ...
     """
     ex, _ = variant(name)
+    if _needs_id(get(name)):  # never ✓ on numbers that may not be the student's
+        text = "no student id is set, so these are not your numbers. " + how_to_set_id()
+        return CheckResult(False, f"{name}: {text}", "no id")
     try:
         fp = _fingerprints()[ex.name]
         with np.errstate(all="ignore"), warnings.catch_warnings():

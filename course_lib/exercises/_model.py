@@ -109,7 +109,8 @@ class CheckResult(Verdict):
     """The verdict on one answer: ``ok``, the message (exercise name first) and a ``status``.
 
     ``status`` is one of ``"correct"``, ``"wrong"``, ``"form"`` (right value, asked form not
-    met), ``"malformed"``, ``"not allowed"``, ``"too complex"`` and ``"no answer"``.
+    met), ``"malformed"``, ``"not allowed"``, ``"too complex"``, ``"no answer"`` and ``"no id"``
+    (an exercise with numbers of its own per student, and no student id set).
 
     Examples
     --------

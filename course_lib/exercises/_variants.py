@@ -6,11 +6,10 @@ angle, a matrix ...). Which one a student sees is decided by a stable hash of th
 in the student's kernel and in the grader's process alike (the grader derives it from the id
 it is given, never from the notebook).
 
-The id comes, in this order, from :func:`set_student_id` (a code the instructor hands out),
-the environment variable ``COURSE_STUDENT_ID``, or ``JUPYTERHUB_USER`` (a JupyterHub user, who
-is usually also the nbgrader student id). With no id, every exercise shows its default
-variant (index 0, the numbers of the course without variants) and :func:`identity_line` says
-how to set one.
+The id, and the one key per student it resolves to, are those of
+:mod:`course_lib.exercises._identity` (re-exported here). With no id, every exercise shows
+its default variant (index 0, the example numbers), and :func:`~course_lib.exercises.check`
+refuses to say ✓ on an exercise with variants: it says how to set the id.
 
 Examples
 --------
@@ -30,14 +29,27 @@ from __future__ import annotations
 import copy
 import hashlib
 import json
-import os
-import unicodedata
 from functools import lru_cache
 from importlib import resources
 
+from ._identity import (
+    ENV_ID,
+    EXAMPLE_ID,
+    GRADER_ID,
+    HUB_ID,
+    course_key,
+    identity_line,
+    normalise_id,
+    set_student_id,
+    student_id,
+)
+
 __all__ = [
     "ENV_ID",
+    "EXAMPLE_ID",
+    "GRADER_ID",
     "HUB_ID",
+    "course_key",
     "TABLE_FILE",
     "identity_line",
     "table",
@@ -50,66 +62,17 @@ __all__ = [
     "variant_index",
 ]
 
-#: The environment variable an instructor (or a student, on Colab) sets to a handed-out code.
-ENV_ID = "COURSE_STUDENT_ID"
-#: The variable JupyterHub sets in every single-user server.
-HUB_ID = "JUPYTERHUB_USER"
 #: Salt of the variant hash; changing it gives every student other numbers.
 _SALT = "rotations-course/variants/v1"
-_state = {"id": None}
-
-
-def normalise_id(raw):
-    """The id as it is hashed: NFKC unicode, case folded, inner white space one blank.
-
-    Any string is accepted (empty, unicode, 1,000 characters, spaces); ``None`` is ``""``.
-
-    Raises
-    ------
-    TypeError
-        If ``raw`` is not a string or None.
-
-    Examples
-    --------
-    >>> normalise_id("Ｚｏë\tX")
-    'zoë x'
-    """
-    if raw is None:
-        return ""
-    if not isinstance(raw, str):
-        raise TypeError(f"student id must be a string, got {type(raw).__name__}")
-    text = unicodedata.normalize("NFKC", raw).casefold()
-    return " ".join(text.split())
-
-
-def set_student_id(raw):
-    """Set the student id of this kernel (a code from the instructor); ``None`` unsets it.
-
-    Examples
-    --------
-    >>> set_student_id("ada"); student_id()
-    ('ada', 'set_student_id')
-    >>> set_student_id(None)
-    """
-    _state["id"] = None if raw is None else normalise_id(raw)
-
-
-def student_id():
-    """``(normalised id, where it came from)``; ``("", "none")`` when no id is set."""
-    if _state["id"]:
-        return _state["id"], "set_student_id"
-    for var in (ENV_ID, HUB_ID):
-        value = normalise_id(os.environ.get(var, ""))
-        if value:
-            return value, var
-    return "", "none"
 
 
 def variant_index(key, count, student=None):
     """The variant (``0 <= index < count``) of the exercise variant key ``key`` for a student.
 
-    ``student`` is an id (normalised here) or None for this kernel's :func:`student_id`. An
-    empty id, or ``count`` 1, gives 0, the default variant. Stable across Python and numpy
+    ``student`` is an id (made a key by :func:`course_key`; the grader passes the key its roster
+    gives) or None
+    for this kernel's :func:`student_id`. An empty id, :data:`EXAMPLE_ID`, or ``count`` 1,
+    gives 0, the default variant. Stable across Python and numpy
     versions (SHA-256 of the salted, normalised id and the key).
 
     Raises
@@ -119,34 +82,11 @@ def variant_index(key, count, student=None):
     """
     if type(count) is not int or count < 1:
         raise ValueError(f"count must be a positive integer, got {count!r}")
-    sid = student_id()[0] if student is None else normalise_id(student)
-    if not sid or count == 1:
+    sid = student_id()[0] if student is None else course_key(student)
+    if not sid or sid == EXAMPLE_ID or count == 1:
         return 0
     digest = hashlib.sha256(f"{_SALT}\x00{sid}\x00{key}".encode()).digest()
     return int.from_bytes(digest[:8], "big") % count
-
-
-def identity_line():
-    """One line for the top of a problem set: whose numbers it shows, or how to set the id.
-
-    Examples
-    --------
-    >>> set_student_id("ada"); print(identity_line())  # doctest: +ELLIPSIS
-    Student id: ada (from set_student_id): the exercises show the numbers of this id...
-    >>> set_student_id(None)
-    """
-    sid, source = student_id()
-    if sid:
-        return (
-            f"Student id: {sid} (from {source}): the exercises show the numbers of this id; "
-            "grading uses your course id, so it must be yours."
-        )
-    return (
-        "No student id is set: the exercises show their default numbers. If your instructor "
-        f"gave you an id, run `from course_lib.exercises import set_student_id; "
-        f'set_student_id("your id")` in a new cell (or set the environment variable {ENV_ID}), '
-        "then run all cells again; on the course's JupyterHub your user name is used."
-    )
 
 
 # --------------------------------------------------------------------------- the variant tables

@@ -400,6 +400,13 @@ def _grade(top, started, budget, course):
             metadata = json.loads(meta_path.read_text())
         except ValueError:
             metadata = {}
+    try:
+        data, note = _intake(top, expected)
+    except Refused as err:
+        return failure(f"0 points: {err}", started)
+    name, problem = confinement()
+    if problem:
+        raise GraderFault(f"the confined kernel cannot start here ({problem})")
     roster_file = SOURCE / ROSTER
     try:
         who = identity(metadata, load([roster_file] if roster_file.is_file() else []))
@@ -408,13 +415,6 @@ def _grade(top, started, budget, course):
     student = _safe(who.key)
     rows = _csv_row(["key", "alias"]) + _csv_row([who.key, student])
     (course / SUBMISSION_ID).write_text(rows, encoding="utf-8")
-    try:
-        data, note = _intake(top, expected)
-    except Refused as err:
-        return failure(f"0 points: {err}", started)
-    name, problem = confinement()
-    if problem:
-        raise GraderFault(f"the confined kernel cannot start here ({problem})")
     submitted = course / "submitted"
     dest = submitted / student / ps
     if submitted.resolve() not in dest.resolve().parents:

@@ -42,6 +42,8 @@ from traitlets import Integer
 from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
+from . import answer_log  # issue 34
+from .diagnose import CHECKED, entry  # issue 34
 from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
 from .verify import verdict
 
@@ -252,6 +254,20 @@ def _records(cell):
 class VerifyRecords(NbGraderPreprocessor):
     """Each exercise check cell keeps its points only on the grader's "correct"."""
 
+    # --- issue 34: what the class report keeps of each answer (grader/answer_log.py) ---
+    def preprocess(self, nb, resources):
+        self._answers = []
+        nb, resources = super().preprocess(nb, resources)
+        answer_log.save(resources, self._answers, self.log)
+        return nb, resources
+
+    def _note(self, name, cell, resources, data=None, result=None):
+        student = resources.get("nbgrader", {}).get("student")
+        checked = cell.metadata.get(CHECKED)
+        self._answers.append(entry(name, data, student, result, checked))
+
+    # --- end issue 34 ---
+
     def preprocess_cell(self, cell, resources, cell_index):
         if cell.cell_type != "code" or not utils.is_grade(cell):
             return cell, resources
@@ -262,12 +278,14 @@ class VerifyRecords(NbGraderPreprocessor):
         zero = cell.metadata.pop(ZERO, None)
         if zero:
             cell.outputs = [note_output(zero)]
+            self._note(name, cell, resources)  # issue 34
             return cell, resources
         failed = any(o.output_type == "error" for o in cell.outputs)
         records = _records(cell)
         if len(records) != 1:
             note = "no answer record" if not records else f"{len(records)} answer records"
             cell.outputs = [note_output(f"{name}: 0 points: {note} in the check cell's output.")]
+            self._note(name, cell, resources)  # issue 34
             return cell, resources
         student = resources.get("nbgrader", {}).get("student")  # nbgrader's, not the notebook's
         result = verdict(name, json.loads(json.dumps(records[0]["data"][MIME])), student)
@@ -285,6 +303,7 @@ class VerifyRecords(NbGraderPreprocessor):
                 and not (o.output_type == "stream" and o.name == "stderr")
             ]
         self.log.info("%s: grader's verdict %s", name, result.status)
+        self._note(name, cell, resources, records[0]["data"][MIME], result)  # issue 34
         return cell, resources
 
 

@@ -35,13 +35,15 @@ from course_lib.exercises._variants import table
 from . import verify as V
 from .records import parse
 
-__all__ = ["entry", "known_mistake", "group_of", "CHECKED", "DIGITS"]
+__all__ = ["entry", "known_mistake", "group_of", "CHECKED", "DIGITS", "OTHER"]
 
 #: Cell metadata key set by :class:`grader.answer_log.NoteChecksRun` on each check cell.
 CHECKED = "rotations_course_checked"
 DIGITS = 6  # significant digits of the group key
 GROUP_POINTS = 5
 SHOWN = 120  # characters of an answer's text kept for the report
+#: The group of a wrong answer that is right for the numbers the notebook showed (a wrong id).
+OTHER = "other-numbers"
 
 
 @cache
@@ -116,6 +118,14 @@ def _round(values):
         return [float(f"{v:.{DIGITS}g}") if np.isfinite(v) else str(v) for v in vals]
 
 
+def _text(M):
+    """An answer on one line: an explicit matrix by its entries, else sympy's text."""
+    if isinstance(M, sp.MatrixBase):
+        items = [sp.sstr(e) for e in M]
+        return items[0] if len(items) == 1 else "(" + ", ".join(items) + ")"
+    return sp.sstr(M)
+
+
 def group_of(ex, got):
     """``(key, text)`` of a read answer: equal values share the key; the text shows it."""
     if isinstance(ex.answer, Choice):
@@ -132,8 +142,16 @@ def group_of(ex, got):
     with np.errstate(all="ignore"):
         vals = E.values(form, M, E.base_symbols(ex.answer), pts)
     key = hashlib.sha256(repr(_round(vals)).encode()).hexdigest()[:16]
-    text = sp.sstr(M)
+    text = _text(M)
     return key, text if len(text) <= SHOWN else text[: SHOWN - 1] + "…"
+
+
+def _shown_right(ex, got, shown, index):
+    """Is the answer right for the variant the notebook showed (another id's numbers)?"""
+    if ex.variants is None or shown is None or shown == index:
+        return False
+    rows = table()["keys"].get(ex.variants.key) or []
+    return 0 <= shown < len(rows) and _same(ex, got, V.expected(ex.name, shown))
 
 
 def entry(name, data, student, result, checked=None):
@@ -156,7 +174,9 @@ def entry(name, data, student, result, checked=None):
         with V._deadline(V.SECONDS), np.errstate(all="ignore"):
             got = _answer(ex, data)
             out["mistake"] = known_mistake(name, got, index)
-            if out["mistake"] is None:
+            if out["mistake"] is None and _shown_right(ex, got, out["shown"], index):
+                out["group"], out["answer"] = OTHER, "right for the numbers the notebook showed"
+            elif out["mistake"] is None:
                 out["group"], out["answer"] = group_of(ex, got)
     except Exception as err:  # noqa: BLE001 - also the time limit (a note, never a stop)
         out["group"], out["answer"] = "unreadable", f"({type(err).__name__})"

@@ -187,6 +187,9 @@ def results_for(course, ps, student, started):
     if autograded is not None:
         nb = nbformat.read(autograded, as_version=4)
         cells = {c.metadata.get("nbgrader", {}).get("grade_id"): c for c in nb.cells}
+    from grader.answer_log import read_student  # issue 34: the grader's notes per answer
+
+    notes = read_student(course, ps, student)
     tests = []
     for number, (gid, score, max_score) in enumerate(grades, 1):
         name = gid[: -len("-check")] if gid.endswith("-check") else gid
@@ -202,6 +205,7 @@ def results_for(course, ps, student, started):
                 "status": "passed" if full else "failed",
                 "output": _short(output),
                 "visibility": VISIBILITY,
+                "extra_data": notes.get(name, {}),  # issue 34: for the class report
             }
         )
     total = sum(t["score"] for t in tests)
@@ -212,6 +216,7 @@ def results_for(course, ps, student, started):
         "output": f"{ps}: {total:g} of {most:g} points, graded by the course's grader.",
         "visibility": VISIBILITY,
         "stdout_visibility": "hidden",
+        "extra_data": {"assignment": ps},  # issue 34: names the set in the export
         "tests": tests,
     }
 

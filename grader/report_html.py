@@ -168,8 +168,8 @@ def other_rows(e, view):
                 view.share(e.never_checked, e.checked_known),
             ]
         )
-    if view.private and e.other_numbers:
-        rows[2].append(", ".join(e.other_numbers))
+    if view.private and e.other_numbers:  # a "who" column, filled on its row only
+        rows = [row + [", ".join(e.other_numbers) if k == 2 else ""] for k, row in enumerate(rows)]
     return rows
 
 

@@ -38,7 +38,7 @@ ALPHA = 0.05
 UPPER_LOWER = 0.27
 MIN_DISCRIMINATION = 10
 SMALL = 5  # the shared copy shows counts from 1 to SMALL - 1 as "<5"
-NOT_RIGHT = ("wrong", "form", "no answer", "malformed", "forged", "zero", "unknown")
+OTHER = "other-numbers"  # grader.diagnose.OTHER: right for another variant's numbers
 
 
 def fisher_less(a, b, c, d):
@@ -161,7 +161,7 @@ def _variants(name, subs):
 def _group(answers):
     groups = {}
     for sid, ans in answers:
-        if ans.verdict == "wrong" and not ans.mistake:
+        if ans.verdict == "wrong" and not ans.mistake and ans.group != OTHER:
             key = ans.group or ans.text or "?"
             text, who = groups.get(key, (ans.text or "(not recorded)", []))
             groups[key] = (text, [*who, sid])
@@ -169,9 +169,14 @@ def _group(answers):
     return [(text, len(who), sorted(who)) for text, who in ranked]
 
 
+def _who(sub):
+    """How the instructor's copy names a student: name and id, or the id."""
+    return f"{sub.name} ({sub.student})" if sub.name else sub.student
+
+
 def exercise_stats(ps, name, known=True):
     """The :class:`ExerciseStats` of exercise ``name`` of the problem set ``ps``."""
-    answers = [(s.student, s.answers[name]) for s in ps.submissions if name in s.answers]
+    answers = [(_who(s), s.answers[name]) for s in ps.submissions if name in s.answers]
     most = ps.points.get(name, 0.0)
     dist = Counter(a.score for _, a in answers)
     levels = range(int(most) + 1) if float(most).is_integer() else []

@@ -102,6 +102,7 @@ student: $(STAMP)
 bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
 	$(BIN)/python benchmarks/bench_exercises.py
+	$(BIN)/python -m benchmarks.bench_report
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
 # and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
@@ -159,9 +160,21 @@ UNCONFINED ?=
 gradescope: $(STAMP)
 	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined)
 
+# GRADESCOPE=EXPORT (issue 34): the scores of Gradescope's export(s) instead of COURSE; MISSING=zero
+# writes 0 for missing work (default: blank, which Canvas leaves unchanged).
+MISSING    ?=
+GRADESCOPE ?=
 grades-canvas: $(STAMP)
-	@test -n "$(COURSE)" || { echo "usage: make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv]"; exit 2; }
-	$(BIN)/python -m grader.canvas $(COURSE) $(if $(ASSIGNMENT),--assignment $(ASSIGNMENT)) $(if $(ROSTER),--roster $(ROSTER))
+	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make grades-canvas COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [MISSING=zero]"; exit 2; }
+	$(BIN)/python -m grader.canvas $(COURSE) $(foreach g,$(GRADESCOPE),--gradescope $(g)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(MISSING),--missing $(MISSING))
+
+# What the class got wrong (issue 34, docs/grading.md): one HTML report and CSV per problem set,
+# the instructor's copy and a de-identified one, from an nbgrader course or a Gradescope export.
+.PHONY: report
+OUT ?=
+report: $(STAMP)
+	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make report COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [OUT=folder]"; exit 2; }
+	$(BIN)/python -m grader.report $(if $(COURSE),--course $(COURSE)) $(if $(GRADESCOPE),--gradescope $(GRADESCOPE)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(OUT),--out $(OUT))
 
 bench-gradescope: $(STAMP)
 	$(BIN)/python benchmarks/bench_gradescope.py

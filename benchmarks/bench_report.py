@@ -53,8 +53,13 @@ def synthetic_export(folder, ps, names, students, seed=0):
             ex = get(name)
             score, extra = _extra(ex, rng)
             tests.append(
-                {"name": name, "number": str(number), "score": float(score),
-                 "max_score": float(ex.points), "extra_data": extra}
+                {
+                    "name": name,
+                    "number": str(number),
+                    "score": float(score),
+                    "max_score": float(ex.points),
+                    "extra_data": extra,
+                }
             )
         data[f"submission_{1000 + i}"] = {
             ":submitters": [{":name": f"Student {i}", ":sid": f"s{i:04d}"}],

@@ -62,9 +62,13 @@ class Submission:
     student: str  # the grader's student id
     name: str  # the student's name where the source has one, else ''
     answers: dict  # exercise -> Answer
+    email: str = ""
+    total: float | None = None  # the source's own total (Gradescope's, with any adjustment)
 
     @property
     def score(self):
+        if self.total is not None:
+            return self.total
         return sum(a.score for a in self.answers.values())
 
 
@@ -238,13 +242,14 @@ def _from_metadata(text, path, assignment):
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as err:
-        raise ValueError(f"GRADESCOPE: submission_metadata.yml of {path} is not YAML ({err})")
+        msg = f"GRADESCOPE: submission_metadata.yml of {path} is not YAML ({err})"
+        raise ValueError(msg) from None
     if not isinstance(data, dict):
         raise ValueError(f"GRADESCOPE: submission_metadata.yml of {path} is not a mapping")
     entries = [e for e in data.values() if isinstance(e, dict)]
     ps = ProblemSet(_set_name(entries, assignment), [], {}, source=f"Gradescope export {path}")
     for entry in entries:
-        sid, name, _ = _people(entry)
+        sid, name, email = _people(entry)
         answers = {}
         for test in _tests(entry.get(":results")):
             ex = str(test.get("name") or "")[:80]
@@ -252,11 +257,16 @@ def _from_metadata(text, path, assignment):
                 ps.exercises.append(ex)
                 ps.points[ex] = float(test.get("max_score") or 0.0)
             answers[ex] = _answer(test.get("score"), test.get("max_score"), test.get("extra_data"))
-        ps.submissions.append(Submission(sid or f"submission {len(ps.submissions) + 1}", name, answers))
+        sid = sid or f"submission {len(ps.submissions) + 1}"
+        total = entry.get(":score")
+        total = float(total) if isinstance(total, (int, float)) else None
+        ps.submissions.append(Submission(sid, name, answers, email, total))
     if not ps.submissions:
         ps.notes.append(f"{ps.name}: the export holds no submission.")
     ps.notes += _unknown_notes(ps)
-    ps.notes += _undetailed_note(ps, "(no extra_data in their tests: graded by an older autograder?)")
+    ps.notes += _undetailed_note(
+        ps, "(no extra_data in their tests: graded by an older autograder?)"
+    )
     return ps
 
 
@@ -287,7 +297,8 @@ def _from_csv(path, assignment):
         if score is None or (row.get("Status") or "").strip().lower() == "missing":
             ps.missing.append((sid, who.strip()))
             continue
-        ps.submissions.append(Submission(sid, who.strip(), {"total": _answer(score, 0.0, None)}))
+        answers = {"total": _answer(score, 0.0, None)}
+        ps.submissions.append(Submission(sid, who.strip(), answers, row.get("Email") or ""))
     ps.exercises, ps.points = ["total"], {"total": most}
     for sub in ps.submissions:
         sub.answers["total"].max_score = most

@@ -203,7 +203,7 @@ def _head(st, view):
         f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         f'<meta name="viewport" content="width=device-width, initial-scale=1">'
         f"<title>{escape(title)}</title><style>{CSS}</style></head><body><main>"
-        f"<h1>{escape(title)}</h1><p class=\"copy\">{copy}</p>"
+        f'<h1>{escape(title)}</h1><p class="copy">{copy}</p>'
     )
 
 
@@ -231,9 +231,11 @@ def _teach(st, view):
         f"{view.count(c)} submissions. {escape(hint)}</li>"
         for ex, key, c, hint in st.teach_again
     ]
-    return "<h2>Teach again</h2><p>The most common known mistakes of the set.</p><ol>" + "".join(
-        items
-    ) + "</ol>"
+    return (
+        "<h2>Teach again</h2><p>The most common known mistakes of the set.</p><ol>"
+        + "".join(items)
+        + "</ol>"
+    )
 
 
 def _summary(st, view):
@@ -279,7 +281,9 @@ def _section_tables(e, view):
     out.append("<h3>Wrong answers no known mistake explains</h3>")
     rows = unexplained_rows(e, view)
     head = UNEXPLAINED_HEAD + (["who"] if view.private else [])
-    out.append(_table(f"Unexplained wrong answers to {e.name}", head, rows) if rows else "<p>None.</p>")
+    out.append(
+        _table(f"Unexplained wrong answers to {e.name}", head, rows) if rows else "<p>None.</p>"
+    )
     out.append("<h3>Other answers and the check</h3>")
     head = OTHER_HEAD + (["who"] if view.private and e.other_numbers else [])
     out.append(_table(f"Other outcomes of {e.name}", head, other_rows(e, view)))

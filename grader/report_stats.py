@@ -219,6 +219,10 @@ def set_stats(ps, known=None):
     order = {e.name: i for i, e in enumerate(exercises)}
     teach.sort(key=lambda t: (-t[2], order[t[0]], t[1]))
     return SetStats(
-        ps.name, len(ps.submissions), exercises, dict(sorted(totals.items())), teach[:3],
+        ps.name,
+        len(ps.submissions),
+        exercises,
+        dict(sorted(totals.items())),
+        teach[:3],
         ps.max_score,
     )

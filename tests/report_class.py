@@ -115,9 +115,7 @@ def _namespace(name, kid):
 
 def _other_letters(ex, right, mistakes):
     taken = {frozenset(right)} | {frozenset(m) for m in mistakes}
-    subsets = (
-        set(c) for r in range(1, 4) for c in itertools.combinations(ex.answer.letters, r)
-    )
+    subsets = (set(c) for r in range(1, 4) for c in itertools.combinations(ex.answer.letters, r))
     return [s for s in subsets if frozenset(s) not in taken]
 
 
@@ -199,7 +197,9 @@ def grade_one(course, ids, i):
         cell.execution_count = 1
     nb, _ = VerifyRecords().preprocess(nb, resources)
     return {
-        n: 0.0 if any(o.output_type == "error" for o in c.outputs) else float(c.metadata.nbgrader["points"])
+        n: 0.0
+        if any(o.output_type == "error" for o in c.outputs)
+        else float(c.metadata.nbgrader["points"])
         for n, c in zip(NAMES, nb.cells)
     }
 

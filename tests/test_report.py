@@ -23,6 +23,7 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 import report_class as RC  # noqa: E402
+
 from grader import gradescope_run  # noqa: E402
 from grader.report import main, write_reports  # noqa: E402
 from grader.report_data import (  # noqa: E402
@@ -131,7 +132,7 @@ def test_a_roster_lists_missing_work_and_a_wrong_id(planted, tmp_path):
 
 
 def _cells(text):
-    return [row for row in csv.reader(io.StringIO(text))]
+    return list(csv.reader(io.StringIO(text)))
 
 
 def test_shared_copy_names_nobody_and_hides_counts_under_five(planted):
@@ -201,7 +202,9 @@ def test_empty_course_and_a_set_nobody_submitted(tmp_path, capsys):
     with Gradebook(f"sqlite:///{tmp_path / 'gradebook.db'}") as gb:
         gb.add_assignment("ps02")
         gb.update_or_create_notebook("nb", "ps02")
-        gb.update_or_create_grade_cell("hat_product-check", "nb", "ps02", max_score=3, cell_type="code")
+        gb.update_or_create_grade_cell(
+            "hat_product-check", "nb", "ps02", max_score=3, cell_type="code"
+        )
         gb.add_student("ada")
     (ps,) = from_course(tmp_path)
     paths = write_reports([ps], tmp_path / "r")

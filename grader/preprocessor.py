@@ -264,6 +264,8 @@ class VerifyRecords(NbGraderPreprocessor):
     def _note(self, name, cell, resources, data=None, result=None):
         student = resources.get("nbgrader", {}).get("student")
         checked = cell.metadata.get(CHECKED)
+        if not hasattr(self, "_answers"):  # preprocess_cell called on its own
+            self._answers = []
         self._answers.append(entry(name, data, student, result, checked))
 
     # --- end issue 34 ---

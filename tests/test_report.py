@@ -250,3 +250,12 @@ def test_gradescope_export_without_extra_data_or_scores_only_says_so(planted, tm
 def _write(path, text):
     path.write_text(text)
     return path
+
+
+@pytest.mark.parametrize("module", ["grader.diagnose", "grader.report_stats"])
+def test_the_examples_in_the_docstrings_run(module):
+    import doctest
+    import importlib
+
+    failed, tried = doctest.testmod(importlib.import_module(module))
+    assert failed == 0 and tried > 0

@@ -71,7 +71,18 @@ def _path(course, assignment, student, notebook):
 
 
 def write(course, assignment, student, notebook, answers):
-    """Write one student's entries for one notebook (whole, then renamed); returns the path."""
+    """Write one student's entries for one notebook (whole, then renamed); returns the path.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> course = tempfile.mkdtemp()
+    >>> path = write(course, "ps01", "ada lovelace", "ps01_x", [{"exercise": "bac_cab"}])
+    >>> path.relative_to(course).as_posix()
+    'answer-log/ps01/ada%20lovelace/ps01_x.json'
+    >>> read(course, "ps01")
+    {'ada lovelace': {'bac_cab': {'exercise': 'bac_cab'}}}
+    """
     path = _path(course, assignment, student, notebook)
     path.parent.mkdir(parents=True, exist_ok=True)
     data = {

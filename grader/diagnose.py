@@ -98,9 +98,11 @@ def known_mistake(name, got, index=0):
 
     Examples
     --------
-    >>> known_mistake("lagrange_identity", V._read(EXERCISES["lagrange_identity"],
-    ...     sp.Symbol("xx") * sp.Symbol("yy") + sp.Symbol("xy") ** 2))
+    >>> from course_lib.exercises import xx, xy, yy
+    >>> known_mistake("lagrange_identity", V._read(EXERCISES["lagrange_identity"], xx * yy + xy**2))
     'plus'
+    >>> known_mistake("lagrange_identity", V._read(EXERCISES["lagrange_identity"], xx * yy)) is None
+    True
     """
     ex = EXERCISES[name]
     for key, want in _mistaken(name, index).items():

@@ -43,7 +43,16 @@ def _csv_cell(value):
 
 @dataclass(frozen=True)
 class View:
-    """Which copy: ``private`` (the instructor's, with names) or shared (de-identified)."""
+    """Which copy: ``private`` (the instructor's, with names) or shared (de-identified).
+
+    Examples
+    --------
+    >>> shared = View(False)
+    >>> shared.count(0), shared.count(3), shared.count(12), View(True).count(3)
+    ('0', '<5', '12', '3')
+    >>> shared.share(12, 30), shared.share(27, 30)  # 3 not right could be worked out
+    ('40%', 'hidden')
+    """
 
     private: bool
 

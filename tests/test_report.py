@@ -252,7 +252,22 @@ def _write(path, text):
     return path
 
 
-@pytest.mark.parametrize("module", ["grader.diagnose", "grader.report_stats"])
+def test_equal_expressions_written_otherwise_are_one_group_of_unexplained_answers():
+    from course_lib.exercises import EXERCISES, xx, xy, yy
+    from grader.diagnose import group_of
+    from grader.verify import _read
+
+    ex = EXERCISES["lagrange_identity"]
+    one = group_of(ex, _read(ex, xx * (yy + 1)))
+    two = group_of(ex, _read(ex, xx * yy + xx))
+    other = group_of(ex, _read(ex, xx * yy + xy))
+    assert one[0] == two[0] != other[0]
+    assert one[1] == "x·x*(y·y + 1)"
+
+
+@pytest.mark.parametrize(
+    "module", ["grader.diagnose", "grader.report_stats", "grader.report_html", "grader.answer_log"]
+)
 def test_the_examples_in_the_docstrings_run(module):
     import doctest
     import importlib

@@ -20,7 +20,10 @@ ends with an error. :func:`expected` gives the counts the plan implies.
 from __future__ import annotations
 
 import itertools
+import shutil
+import tempfile
 from collections import Counter
+from pathlib import Path
 
 import nbformat
 import numpy as np
@@ -204,11 +207,27 @@ def grade_one(course, ids, i):
     }
 
 
-def gradebook(course, ids, points):
-    """A real nbgrader gradebook of the planted class (``points[i]``: student i's points)."""
+_TEMPLATE = {}
+
+
+def new_gradebook(path):
+    """An empty nbgrader gradebook at ``path``, copied from one made once (nbgrader makes a new
+    one by running ``alembic`` in a subprocess: seconds each on a loaded machine)."""
     from nbgrader.api import Gradebook
 
-    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+    if "db" not in _TEMPLATE:
+        folder = Path(tempfile.mkdtemp(prefix="report-gradebook-"))
+        with Gradebook(f"sqlite:///{folder / 'gradebook.db'}"):
+            pass
+        _TEMPLATE["db"] = folder / "gradebook.db"
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(_TEMPLATE["db"], path)
+    return Gradebook(f"sqlite:///{path}")
+
+
+def gradebook(course, ids, points):
+    """A real nbgrader gradebook of the planted class (``points[i]``: student i's points)."""
+    with new_gradebook(course / "gradebook.db") as gb:
         gb.add_assignment(PS)
         gb.update_or_create_notebook(NOTEBOOK, PS)
         for name in NAMES:

@@ -193,13 +193,11 @@ def test_discrimination_index_upper_minus_lower():
 def test_empty_course_and_a_set_nobody_submitted(tmp_path, capsys):
     assert main(["--course", str(tmp_path)]) == 2
     assert "no gradebook.db" in capsys.readouterr().err
-    from nbgrader.api import Gradebook
-
-    with Gradebook(f"sqlite:///{tmp_path / 'gradebook.db'}"):
+    with RC.new_gradebook(tmp_path / "gradebook.db"):
         pass
     assert main(["--course", str(tmp_path)]) == 2
     assert "no assignment yet" in capsys.readouterr().err
-    with Gradebook(f"sqlite:///{tmp_path / 'gradebook.db'}") as gb:
+    with RC.new_gradebook(tmp_path / "gradebook.db") as gb:
         gb.add_assignment("ps02")
         gb.update_or_create_notebook("nb", "ps02")
         gb.update_or_create_grade_cell(
@@ -213,9 +211,7 @@ def test_empty_course_and_a_set_nobody_submitted(tmp_path, capsys):
 
 
 def test_a_gradebook_of_another_course_version_notes_each_unknown_exercise(tmp_path):
-    from nbgrader.api import Gradebook
-
-    with Gradebook(f"sqlite:///{tmp_path / 'gradebook.db'}") as gb:
+    with RC.new_gradebook(tmp_path / "gradebook.db") as gb:
         gb.add_assignment("ps01")
         gb.update_or_create_notebook("nb", "ps01")
         for gid in ("bac_cab-check", "old_exercise-check"):

@@ -13,7 +13,7 @@ import pytest
 import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 from grader.canvas import IDENTITY, export, main, write_csv  # noqa: E402
 from grader.canvas_gradescope import export as from_gradescope  # noqa: E402
 
@@ -75,12 +75,11 @@ def test_missing_as_zero_on_both_paths(exports, tmp_path, monkeypatch):
     table = {r[2]: r[5:] for r in result.rows[1:]}
     assert table["s3"] == ["0", "0"] and table["s2"] == ["3.5", "0"]
     assert "has no ps02 (0, as asked (--missing zero))" in "\n".join(result.report())
-    from nbgrader.api import Gradebook
+    from report_class import new_gradebook
 
     monkeypatch.setenv("PATH", f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")
     course = tmp_path / "course"
-    course.mkdir()
-    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+    with new_gradebook(course / "gradebook.db") as gb:
         gb.add_assignment("ps01")
         gb.update_or_create_notebook("nb", "ps01")
         gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=2, cell_type="code")

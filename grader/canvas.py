@@ -56,7 +56,7 @@ class Export:
     def report(self):
         """The lines of the report: every missing submission and unknown student."""
         lines = [f"{len(self.rows) - 1} students, {len(self.header) - len(IDENTITY)} assignments"]
-        as_what = "0, as asked (--missing zero)" if self.missing_as == "zero" else "blank, not 0"
+        as_what = "0, not blank: --missing zero" if self.missing_as == "zero" else "blank, not 0"
         lines += [f"missing submission: {who} has no {ps} ({as_what})" for who, ps in self.missing]
         lines += [
             f"unknown student: {sid} is graded in nbgrader but not in the roster"

@@ -74,7 +74,7 @@ def test_missing_as_zero_on_both_paths(exports, tmp_path, monkeypatch):
     result = from_gradescope([one, two], roster=roster, missing="zero")
     table = {r[2]: r[5:] for r in result.rows[1:]}
     assert table["s3"] == ["0", "0"] and table["s2"] == ["3.5", "0"]
-    assert "has no ps02 (0, as asked (--missing zero))" in "\n".join(result.report())
+    assert "has no ps02 (0, not blank: --missing zero)" in "\n".join(result.report())
     from report_class import new_gradebook
 
     monkeypatch.setenv("PATH", f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}")

@@ -248,10 +248,14 @@ def _from_metadata(text, path, assignment):
         raise ValueError(f"GRADESCOPE: submission_metadata.yml of {path} is not a mapping")
     entries = [e for e in data.values() if isinstance(e, dict)]
     ps = ProblemSet(_set_name(entries, assignment), [], {}, source=f"Gradescope export {path}")
+    failed = 0
     for entry in entries:
         sid, name, email = _people(entry)
         answers = {}
-        for test in _tests(entry.get(":results")):
+        tests = _tests(entry.get(":results"))
+        if [t.get("name") for t in tests] == ["grading"]:  # gradescope_run.failure()
+            failed, tests = failed + 1, []
+        for test in tests:
             ex = str(test.get("name") or "")[:80]
             if ex not in ps.points:
                 ps.exercises.append(ex)
@@ -263,6 +267,11 @@ def _from_metadata(text, path, assignment):
         ps.submissions.append(Submission(sid, name, answers, email, total))
     if not ps.submissions:
         ps.notes.append(f"{ps.name}: the export holds no submission.")
+    if failed:
+        ps.notes.append(
+            f"{ps.name}: {failed} submissions were not graded by the autograder (its output "
+            "says why; 0 points): counted as submissions, in no exercise."
+        )
     ps.notes += _unknown_notes(ps)
     ps.notes += _undetailed_note(
         ps, "(no extra_data in their tests: graded by an older autograder?)"

@@ -270,3 +270,17 @@ def test_the_examples_in_the_docstrings_run(module):
 
     failed, tried = doctest.testmod(importlib.import_module(module))
     assert failed == 0 and tried > 0
+
+
+def test_a_submission_the_autograder_could_not_grade_is_said_not_an_exercise(tmp_path):
+    failed = gradescope_run.failure("the autograder failed (RuntimeError: x)", time.monotonic())
+    graded = {"tests": [{"name": "bac_cab", "score": 3.0, "max_score": 3.0, "extra_data": {}}]}
+    data = {
+        "submission_1": {":submitters": [{":sid": "a"}], ":results": failed},
+        "submission_2": {":submitters": [{":sid": "b"}], ":results": graded},
+    }
+    (tmp_path / "submission_metadata.yml").write_text(yaml.safe_dump(data))
+    ps = from_gradescope(tmp_path, "ps01")
+    assert ps.exercises == ["bac_cab"] and len(ps.submissions) == 2
+    assert any("1 submissions were not graded by the autograder" in n for n in ps.notes)
+    assert not any("'grading'" in n for n in ps.notes)

@@ -10,10 +10,8 @@ from __future__ import annotations
 import base64
 import io
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 
 __all__ = ["score_figure", "share_figure", "BAR"]
 
@@ -21,10 +19,16 @@ BAR = "#1f4e79"
 DPI = 80
 
 
+def _figure(width, height):
+    """A figure and its axes, outside pyplot (no global state, no backend switch)."""
+    fig = Figure(figsize=(width, height))
+    FigureCanvasAgg(fig)
+    return fig, fig.add_subplot()
+
+
 def _png(fig):
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=DPI, bbox_inches="tight")
-    plt.close(fig)
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
@@ -42,7 +46,7 @@ def score_figure(title, distribution, shown):
     counts = [distribution[v] for v in levels]
     texts = [shown(c) for c in counts]
     heights = [c if t == str(c) else 0 for c, t in zip(counts, texts)]
-    fig, ax = plt.subplots(figsize=(3.6, 2.0))
+    fig, ax = _figure(3.6, 2.0)
     ax.bar([_label(v) for v in levels], heights, color=BAR)
     for i, (h, t) in enumerate(zip(heights, texts)):
         ax.annotate(t, (i, h), ha="center", va="bottom", fontsize=9)
@@ -58,7 +62,7 @@ def score_figure(title, distribution, shown):
 def share_figure(rows):
     """Horizontal bars of the share right per exercise; ``rows`` = [(label, share or None)].
     Returns ``(uri, alt)``."""
-    fig, ax = plt.subplots(figsize=(5.0, 0.35 * len(rows) + 0.8))
+    fig, ax = _figure(5.0, 0.35 * len(rows) + 0.8)
     labels = [label for label, _ in rows][::-1]
     values = [(share or 0.0) * 100 for _, share in rows][::-1]
     ax.barh(labels, values, color=BAR)

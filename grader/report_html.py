@@ -111,7 +111,8 @@ def summary_rows(st, view):
     never ran the check."""
     rows = []
     for e in st.by_discrimination():
-        never = f"{view.count(e.never_checked)} of {e.checked_known}" if e.checked_known else "–"
+        known = view.count(e.checked_known)
+        never = f"{view.count(e.never_checked)} of {known}" if e.checked_known else "–"
         rows.append(
             [
                 _label(e.name),

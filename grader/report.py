@@ -76,7 +76,8 @@ def main(argv=None):
         print(f"make report: {err}", file=sys.stderr)
         return 2
     for ps in sets:
-        print(f"{ps.name}: {len(ps.submissions)} submissions, {len(ps.missing)} missing")
+        odd = f", {len(ps.unmatched)} under an id the roster lacks" if ps.unmatched else ""
+        print(f"{ps.name}: {len(ps.submissions)} submissions, {len(ps.missing)} missing{odd}")
         for note in ps.notes:
             print(f"report: {note}", file=sys.stderr)
     print(f"wrote {len(paths)} files in {out}")

@@ -167,11 +167,19 @@ def test_page_is_offline_and_has_the_accessible_structure(planted):
 
 
 def test_command_line_writes_both_copies(planted, tmp_path, capsys):
-    course, _ = planted
+    course, ids = planted
     assert main(["--course", str(course), "--out", str(tmp_path / "r")]) == 0
     names = sorted(p.name for p in (tmp_path / "r").iterdir())
     assert names == ["ps01-shared.csv", "ps01-shared.html", "ps01.csv", "ps01.html"]
     assert "30 submissions, 2 missing" in capsys.readouterr().out
+    roster = tmp_path / "canvas.csv"
+    lines = [f"S {sid},{k},{sid},,A" for k, sid in enumerate(ids[1:])] + ["Late,99,late,,A"]
+    roster.write_text("Student,ID,SIS User ID,SIS Login ID,Section\n" + "\n".join(lines))
+    args = ["--course", str(course), "--roster", str(roster), "--out", str(tmp_path / "r2")]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "30 submissions, 1 missing, 1 under an id the roster lacks" in out
+    assert f"Id not in the roster: {ids[0]}" in (tmp_path / "r2" / "ps01.html").read_text()
 
 
 def test_fisher_exact_test_equals_scipys_one_sided():

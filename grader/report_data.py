@@ -239,8 +239,9 @@ def _set_name(entries, assignment):
 def _from_metadata(text, path, assignment):
     import yaml
 
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml's: 20 times faster, as safe
     try:
-        data = yaml.safe_load(text)
+        data = yaml.load(text, Loader=loader)  # noqa: S506 - a safe loader
     except yaml.YAMLError as err:
         msg = f"GRADESCOPE: submission_metadata.yml of {path} is not YAML ({err})"
         raise ValueError(msg) from None

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import base64
 import io
+from functools import lru_cache
 
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
@@ -40,11 +41,17 @@ def score_figure(title, distribution, shown):
     """Bar chart of how many submissions got each number of points.
 
     ``distribution`` maps points to counts; ``shown(count)`` is the text of a count (the shared
-    copy hides small ones: a bar of a hidden count is not drawn). Returns ``(uri, alt)``.
+    copy hides small ones: a bar of a hidden count is not drawn). Returns ``(uri, alt)``; the
+    two copies of a report share a figure whose numbers they show alike.
     """
-    levels = sorted(distribution)
-    counts = [distribution[v] for v in levels]
-    texts = [shown(c) for c in counts]
+    levels = tuple(sorted(distribution))
+    texts = tuple(shown(distribution[v]) for v in levels)
+    counts = tuple(distribution[v] for v in levels)
+    return _score_figure(title, levels, counts, texts)
+
+
+@lru_cache(maxsize=256)
+def _score_figure(title, levels, counts, texts):
     heights = [c if t == str(c) else 0 for c, t in zip(counts, texts)]
     fig, ax = _figure(3.6, 2.0)
     ax.bar([_label(v) for v in levels], heights, color=BAR)
@@ -62,6 +69,11 @@ def score_figure(title, distribution, shown):
 def share_figure(rows):
     """Horizontal bars of the share right per exercise; ``rows`` = [(label, share or None)].
     Returns ``(uri, alt)``."""
+    return _share_figure(tuple(rows))
+
+
+@lru_cache(maxsize=64)
+def _share_figure(rows):
     fig, ax = _figure(5.0, 0.35 * len(rows) + 0.8)
     labels = [label for label, _ in rows][::-1]
     values = [(share or 0.0) * 100 for _, share in rows][::-1]

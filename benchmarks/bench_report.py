@@ -6,7 +6,11 @@ set, right, with one of the exercise's known mistakes, with one of a few unexpla
 not at all, at random (seeded), on a random variant. Timed: reading the five exports, the
 numbers and writing both copies (HTML with its figures, CSV) of the five reports.
 
-    python -m benchmarks.bench_report [--students 200] [--sets 5]
+    python -m benchmarks.bench_report [--students 200] [--sets 5] [--nbgrader]
+
+``--nbgrader``: the same answers in an nbgrader course directory instead (a real
+``gradebook.db`` made with nbgrader's API and the grader's ``answer-log/``; making it takes
+about a minute and is not timed).
 """
 
 from __future__ import annotations
@@ -20,9 +24,10 @@ from pathlib import Path
 import yaml
 
 from course_lib.exercises import get
+from grader import answer_log
 from grader.course import problem_sets
 from grader.report import write_reports
-from grader.report_data import from_gradescope
+from grader.report_data import from_course, from_gradescope
 
 GOAL = 30.0
 
@@ -72,6 +77,40 @@ def synthetic_export(folder, ps, names, students, seed=0):
     return folder
 
 
+def synthetic_course(folder, sets, students, seed=0):
+    """An nbgrader course directory of ``students`` answering ``sets`` = [(ps, names)]."""
+    import os
+    import sys
+    import warnings
+
+    from nbgrader.api import Gradebook
+    from sqlalchemy.exc import SAWarning
+
+    warnings.simplefilter("ignore", SAWarning)  # nbgrader's own add_submission (SQLAlchemy 2)
+
+    bin_dir = str(Path(sys.executable).parent)  # nbgrader runs alembic from PATH
+    os.environ["PATH"] = f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}"
+    rng = random.Random(seed)
+    ids = [f"s{i:04d}" for i in range(students)]
+    with Gradebook(f"sqlite:///{folder / 'gradebook.db'}") as gb:
+        for sid in ids:
+            gb.add_student(sid, first_name="Student", last_name=sid)
+        for ps, names in sets:
+            gb.add_assignment(ps)
+            gb.update_or_create_notebook("nb", ps)
+            for n in names:
+                gb.update_or_create_grade_cell(
+                    f"{n}-check", "nb", ps, max_score=get(n).points, cell_type="code"
+                )
+            for sid in ids:
+                drawn = {n: _extra(get(n), rng) for n in names}
+                for g in gb.add_submission(ps, sid).notebooks[0].grades:
+                    g.auto_score = drawn[g.name[: -len("-check")]][0]
+                answer_log.write(folder, ps, sid, "nb", [e for _, e in drawn.values()])
+            gb.db.commit()
+    return folder
+
+
 def _names(nb):
     return [
         c.metadata["nbgrader"]["grade_id"][: -len("-check")]
@@ -84,19 +123,27 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--students", type=int, default=200)
     parser.add_argument("--sets", type=int, default=5)
+    parser.add_argument("--nbgrader", action="store_true", help="from an nbgrader course")
     args = parser.parse_args(argv)
-    sets = list(problem_sets().items())[: args.sets]
+    sets = [(ps, _names(nb)) for (ps, _), nb in list(problem_sets().items())[: args.sets]]
     with tempfile.TemporaryDirectory() as tmp:
-        exports = [
-            synthetic_export(Path(tmp) / ps, ps, _names(nb), args.students, seed)
-            for seed, ((ps, _), nb) in enumerate(sets)
-        ]
+        if args.nbgrader:
+            course = synthetic_course(Path(tmp), sets, args.students)
+        else:
+            exports = [
+                synthetic_export(Path(tmp) / ps, ps, names, args.students, seed)
+                for seed, (ps, names) in enumerate(sets)
+            ]
         start, cpu = time.perf_counter(), time.process_time()
-        loaded = [from_gradescope(folder) for folder in exports]
+        if args.nbgrader:
+            loaded = from_course(course)
+        else:
+            loaded = [from_gradescope(folder) for folder in exports]
         written = write_reports(loaded, Path(tmp) / "report")
         wall, cpu = time.perf_counter() - start, time.process_time() - cpu
     print(
-        f"report of {args.students} students x {len(sets)} problem sets: {wall:.1f} s wall, "
+        f"report of {args.students} students x {len(sets)} problem sets "
+        f"({'nbgrader course' if args.nbgrader else 'Gradescope exports'}): {wall:.1f} s wall, "
         f"{cpu:.1f} s CPU, {len(written)} files; goal {GOAL:.0f} s: ratio {wall / GOAL:.2f}"
     )
     return 0 if wall <= GOAL else 1

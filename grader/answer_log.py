@@ -108,7 +108,7 @@ def save(resources, answers, log=None):
     notebook = info.get("notebook") or resources.get("unique_key") or "notebook"
     try:
         return write(course, info["assignment"], info["student"], notebook, answers)
-    except OSError as err:
+    except (OSError, TypeError, ValueError) as err:
         if log is not None:
             log.warning("answer log not written (%s): the class report lacks it", err)
         return None

@@ -24,7 +24,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 import report_class as RC  # noqa: E402
 
-from grader import gradescope_run  # noqa: E402
+from grader import answer_log, gradescope_run  # noqa: E402
 from grader.report import main, write_reports  # noqa: E402
 from grader.report_data import (  # noqa: E402
     apply_roster,
@@ -292,3 +292,20 @@ def test_a_submission_the_autograder_could_not_grade_is_said_not_an_exercise(tmp
     assert ps.exercises == ["bac_cab"] and len(ps.submissions) == 2
     assert any("1 submissions were not graded by the autograder" in n for n in ps.notes)
     assert not any("'grading'" in n for n in ps.notes)
+
+
+def test_a_failing_note_never_changes_the_grade(planted, monkeypatch, tmp_path):
+    """Regression guard: the report's notes are taken after the verdict and may fail alone."""
+    import grader.preprocessor as pre
+
+    def broken(*args):
+        raise RuntimeError("broken diagnosis")
+
+    course, ids = planted
+    right = [i for i in range(RC.SIZE) if all(RC.roles(n)[i] == "right" for n in RC.NAMES)]
+    before = RC.grade_one(tmp_path, ids, right[0])
+    monkeypatch.setattr(pre, "entry", broken)
+    after = RC.grade_one(tmp_path, ids, right[0])
+    assert after == before == {n: float(RC.EXERCISES[n].points) for n in RC.NAMES}
+    log = answer_log.read(tmp_path, RC.PS)[ids[right[0]]]
+    assert log == {}  # the notes are missing, said by the report; the grade is whole

@@ -104,6 +104,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/bench_so3.py
 	$(BIN)/python benchmarks/bench_orientation.py
 	$(BIN)/python benchmarks/bench_exercises.py
+	$(BIN)/python -m benchmarks.bench_report
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
 # and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
@@ -161,9 +162,21 @@ UNCONFINED ?=
 gradescope: $(STAMP)
 	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined) $(if $(ROSTER),--roster "$(ROSTER)")
 
+# GRADESCOPE=EXPORT (issue 34): the scores of Gradescope's export(s) instead of COURSE; MISSING=zero
+# writes 0 for missing work (default: blank, which Canvas leaves unchanged).
+MISSING    ?=
+GRADESCOPE ?=
 grades-canvas: $(STAMP)
-	@test -n "$(COURSE)" || { echo "usage: make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv]"; exit 2; }
-	$(BIN)/python -m grader.canvas $(COURSE) $(if $(ASSIGNMENT),--assignment $(ASSIGNMENT)) $(if $(ROSTER),--roster $(ROSTER))
+	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make grades-canvas COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [MISSING=zero]"; exit 2; }
+	$(BIN)/python -m grader.canvas $(COURSE) $(foreach g,$(GRADESCOPE),--gradescope $(g)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(MISSING),--missing $(MISSING))
+
+# What the class got wrong (issue 34, docs/grading.md): one HTML report and CSV per problem set,
+# the instructor's copy and a de-identified one, from an nbgrader course or a Gradescope export.
+.PHONY: report
+OUT ?=
+report: $(STAMP)
+	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make report COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [OUT=folder]"; exit 2; }
+	$(BIN)/python -m grader.report $(if $(COURSE),--course $(COURSE)) $(if $(GRADESCOPE),--gradescope $(GRADESCOPE)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(OUT),--out $(OUT))
 
 bench-gradescope: $(STAMP)
 	$(BIN)/python benchmarks/bench_gradescope.py
@@ -178,7 +191,8 @@ test-slow: $(STAMP)
 	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q \
 		-m "slow_grading or gradescope or slow_variants" \
 		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py \
-		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py
+		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py \
+		tests/test_report_roundtrip.py tests/test_grading_intake_nbgrader.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every

@@ -26,7 +26,12 @@ in the report too ("check the id"), with the exercises whose points a regrade ma
 Nothing is silently zero: a student of the roster or the gradebook with no submission of an
 assignment gets a **blank** cell and is listed as missing; a graded nbgrader student that no
 roster row matches is left out of the CSV and listed as unknown. The list goes to stderr and
-to the report file beside the CSV.
+to the report file beside the CSV. ``--missing zero`` (``make grades-canvas MISSING=zero``)
+writes 0 instead of a blank for missing work, still listed.
+
+``--gradescope EXPORT`` (once per problem set) takes the scores from Gradescope's exports
+instead of a course directory (:mod:`grader.canvas_gradescope`), with the same columns,
+roster matching and report.
 """
 
 from __future__ import annotations
@@ -56,13 +61,13 @@ class Export:
     missing: list = field(default_factory=list)  # (student, assignment)
     unknown: list = field(default_factory=list)  # nbgrader ids no roster row matches
     identity: list = field(default_factory=list)  # rows of the course's identity report
+    missing_as: str = "blank"  # issue 34: a missing submission's cell, "blank" or "zero"
 
     def report(self):
         """The lines of the report: every missing submission and unknown student."""
         lines = [f"{len(self.rows) - 1} students, {len(self.header) - len(IDENTITY)} assignments"]
-        lines += [
-            f"missing submission: {who} has no {ps} (blank, not 0)" for who, ps in self.missing
-        ]
+        as_what = "0, not blank: --missing zero" if self.missing_as == "zero" else "blank, not 0"
+        lines += [f"missing submission: {who} has no {ps} ({as_what})" for who, ps in self.missing]
         lines += [
             f"unknown student: {sid} is graded in nbgrader but not in the roster"
             for sid in self.unknown
@@ -104,8 +109,9 @@ def _match(student, rows):
     return None
 
 
-def export(course, assignments=None, roster=None):
-    """An :class:`Export` of the gradebook of the course directory ``course``."""
+def export(course, assignments=None, roster=None, missing="blank"):
+    """An :class:`Export` of the gradebook of the course directory ``course``; a missing
+    submission's cell is blank, or 0 with ``missing="zero"``."""
     from nbgrader.api import Gradebook, MissingEntry
 
     bin_dir = str(Path(sys.executable).parent)  # nbgrader runs alembic from PATH
@@ -163,9 +169,10 @@ def export(course, assignments=None, roster=None):
                 score = scores.get((sid, ps))
                 if score is None:
                     out.missing.append((ident[0] or sid, ps))
-                cells.append("" if score is None else f"{score:g}")
+                cells.append(("0" if missing == "zero" else "") if score is None else f"{score:g}")
             out.rows.append([*ident, *cells])
     out.identity = [r for r in flagged if r.get("assignment") in names]
+    out.missing_as = missing
     return out
 
 
@@ -177,17 +184,28 @@ def write_csv(result, path):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("course", metavar="DIR", help="an nbgrader course directory")
+    parser.add_argument("course", metavar="DIR", nargs="?", help="an nbgrader course directory")
     parser.add_argument("--assignment", action="append", help="psNN (default: every one)")
     parser.add_argument("--roster", help="the course's Canvas gradebook export (CSV)")
     parser.add_argument("--out", help="the CSV to write (default: DIR/canvas-grades.csv)")
+    # issue 34: Gradescope's exported scores instead of a course (grader/canvas_gradescope.py)
+    parser.add_argument("--gradescope", action="append", help="a Gradescope export, per set")
+    parser.add_argument("--missing", choices=("blank", "zero"), default="blank")
     args = parser.parse_args(argv)
     try:
-        result = export(args.course, args.assignment, args.roster)
+        if bool(args.course) == bool(args.gradescope):
+            raise ValueError("give one of COURSE=DIR (nbgrader) or GRADESCOPE=EXPORT")
+        if args.gradescope:
+            from .canvas_gradescope import export as gradescope_export
+
+            result = gradescope_export(args.gradescope, args.assignment, args.roster, args.missing)
+        else:
+            result = export(args.course, args.assignment, args.roster, args.missing)
     except (OSError, ValueError) as err:
         print(f"make grades-canvas: {err}", file=sys.stderr)
         return 2
-    out = Path(args.out or Path(args.course) / "canvas-grades.csv")
+    home = Path(args.course) if args.course else Path(args.gradescope[0]).resolve().parent
+    out = Path(args.out or home / "canvas-grades.csv")
     write_csv(result, out)
     lines = result.report()
     report = out.with_name(out.stem + "-report.txt")

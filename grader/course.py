@@ -106,6 +106,7 @@ from grader.preprocessor import (
     VerifyRecords,
 )
 from grader.pages import InertStudentHTML
+from grader.answer_log import NoteChecksRun  # issue 34: was each check run by the student?
 
 c = get_config()  # noqa: F821
 c.CourseDirectory.root = {root!r}
@@ -114,6 +115,7 @@ c.CourseDirectory.course_id = "rotations"
 # A deleted, duplicated or retyped grade cell: put back with 0 points and a note.
 # ShownNumbers first: which numbers the student's own run showed (a note, never points).
 c.Autograde.sanitize_preprocessors = [
+    NoteChecksRun,  # issue 34: before ClearOutput empties the outputs (grader/answer_log.py)
     ShownNumbers,
     ClearOutput,
     GuardCells,

@@ -253,6 +253,9 @@ def results_for(course, ps, student, started):
     if autograded is not None:
         nb = nbformat.read(autograded, as_version=4)
         cells = {c.metadata.get("nbgrader", {}).get("grade_id"): c for c in nb.cells}
+    from grader.answer_log import read_student  # issue 34: the grader's notes per answer
+
+    notes = read_student(course, ps, student)
     tests = []
     for number, (gid, score, max_score) in enumerate(grades, 1):
         name = gid[: -len("-check")] if gid.endswith("-check") else gid
@@ -268,6 +271,7 @@ def results_for(course, ps, student, started):
                 "status": "passed" if full else "failed",
                 "output": _short(output),
                 "visibility": VISIBILITY,
+                "extra_data": notes.get(name, {}),  # issue 34: for the class report
             }
         )
     total = sum(t["score"] for t in tests)
@@ -285,7 +289,8 @@ def results_for(course, ps, student, started):
         "visibility": VISIBILITY,
         "stdout_visibility": "hidden",
         "tests": tests,
-        "extra_data": {"identity": _identity_data(course, ps, student)},
+        # the set's name (the class report, issue 34) and whose numbers were graded (issue 33)
+        "extra_data": {"assignment": ps, "identity": _identity_data(course, ps, student)},
     }
 
 

@@ -43,7 +43,11 @@ from traitlets import Integer
 from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
-from . import intake
+from . import (
+    answer_log,  # issue 34
+    intake,
+)
+from .diagnose import CHECKED, entry  # issue 34
 from .id_preprocessors import SHOWN, CourseIdentity, ShownNumbers, shown_phrase
 from .identity import RosterError, write_report
 from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
@@ -308,7 +312,9 @@ class VerifyRecords(NbGraderPreprocessor):
         shown = nb.metadata.get(SHOWN)
         self._shown = shown if isinstance(shown, dict) else {}
         self._other, self._lost = [], []
+        self._answers = []  # issue 34: the class report's note of each answer
         nb, resources = super().preprocess(nb, resources)
+        answer_log.save(resources, self._answers, self.log)
         lines = [self._who.note] if self._who.note else []
         if self._other:
             lines.append(self.mismatch_note())
@@ -343,6 +349,20 @@ class VerifyRecords(NbGraderPreprocessor):
             "instructor for a regrade: you are on their list."
         )
 
+    # --- issue 34: what the class report keeps of each answer (grader/answer_log.py) ---
+    def _note(self, name, cell, resources, data=None, result=None):
+        who = getattr(self, "_who", None)  # the key whose numbers were graded
+        student = who.key if who is not None else resources.get("nbgrader", {}).get("student")
+        checked = cell.metadata.get(CHECKED)
+        if not hasattr(self, "_answers"):  # preprocess_cell called on its own
+            self._answers = []
+        try:  # a note for the report: it never changes or stops the grading
+            self._answers.append(entry(name, data, student, result, checked))
+        except Exception as err:  # noqa: BLE001
+            self.log.warning("%s: no note for the class report (%r)", name, err)
+
+    # --- end issue 34 ---
+
     def preprocess_cell(self, cell, resources, cell_index):
         if cell.cell_type != "code" or not utils.is_grade(cell):
             return cell, resources
@@ -353,12 +373,14 @@ class VerifyRecords(NbGraderPreprocessor):
         zero = cell.metadata.pop(ZERO, None)
         if zero:
             cell.outputs = [note_output(zero)]
+            self._note(name, cell, resources)  # issue 34
             return cell, resources
         failed = any(o.output_type == "error" for o in cell.outputs)
         records = _records(cell)
         if len(records) != 1:
             note = "no answer record" if not records else f"{len(records)} answer records"
             cell.outputs = [note_output(f"{name}: 0 points: {note} in the check cell's output.")]
+            self._note(name, cell, resources)  # issue 34
             return cell, resources
         key = self._who.key  # nbgrader's student through the roster, never the notebook's
         shown = self._shown.get(name)
@@ -381,6 +403,7 @@ class VerifyRecords(NbGraderPreprocessor):
                 and not (o.output_type == "stream" and o.name == "stderr")
             ]
         self.log.info("%s: grader's verdict %s", name, result.status)
+        self._note(name, cell, resources, records[0]["data"][MIME], result)  # issue 34
         return cell, resources
 
 

@@ -275,7 +275,7 @@ def grade(top=None):
 
 
 def _grade(top, started, budget):
-    from grader.sandbox import confinement_problem
+    from grader.sandbox import confinement, confinement_problem
 
     ps, expected = assignment()
     course = top / "course"
@@ -295,9 +295,12 @@ def _grade(top, started, budget):
     if confined and not (SOURCE / UNCONFINED_FLAG).is_file():
         return failure(
             "the autograder cannot run your notebook here: its confined kernel needs "
-            f"bubblewrap ({confined}). Nothing was graded; tell your instructor.",
+            f"bubblewrap or a root grader ({confined}). Nothing was graded; tell your instructor.",
             started,
         )
+    kind = confinement() if not (SOURCE / UNCONFINED_FLAG).is_file() else "unconfined"
+    (top / "results").mkdir(parents=True, exist_ok=True)
+    os.chmod(top / "results", 0o700)  # closed to the privdrop kernel's uid (docs/grading.md)
     dest = course / "submitted" / student / ps
     if dest.exists():
         shutil.rmtree(dest)
@@ -310,7 +313,10 @@ def _grade(top, started, budget):
         return failure(
             "the autograder could not grade this notebook; tell your instructor.", started
         )
-    return results_for(course, ps, student, started)
+    results = results_for(course, ps, student, started)
+    results["output"] += f" Confinement of the student's code: {kind}."
+    results["extra_data"] = {"confinement": kind}
+    return results
 
 
 def main(argv=None):

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
 
 import nbformat
 import zmq
@@ -42,7 +43,13 @@ from traitlets import Integer
 from course_lib.record import MIME
 from course_lib.student import nbgrader_metadata
 
-from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
+from .sandbox import (
+    INSTALL,
+    ConfinedKernelManager,
+    confinement,
+    confinement_problem,
+    hidden_problem,
+)
 from .verify import verdict
 
 __all__ = [
@@ -69,8 +76,9 @@ def note_output(note):
 def refusal(problem):
     """What ``nbgrader autograde`` says when it will not run students' code unconfined."""
     return (
-        f"refusing to run students' code: the confined grading kernel needs bubblewrap, and "
-        f"{problem}. Unconfined, a submission runs as you: it can read the solutions "
+        f"refusing to run students' code: the confined grading kernel needs bubblewrap, or a "
+        f"grader run as root for the privilege drop, and here {problem}. Unconfined, a "
+        f"submission runs as you: it can read the solutions "
         f"(tools/solutions), other submissions and the gradebook, and change them. Install "
         f"bubblewrap ({INSTALL}; Linux only) and run the command again. Or, only for work you "
         f"trust, grade without confinement: add --ConfinedKernelManager.unconfined=True to "
@@ -97,6 +105,19 @@ class ConfinedExporter(NotebookExporter):
         elif problem:
             self.log.error(refusal(problem))
             raise NbGraderException(refusal(problem))
+        elif confinement() == "privdrop":
+            km = ConfinedKernelManager(config=self.config)
+            shutil.rmtree(km.scratch, ignore_errors=True)
+            hidden, _ = hidden_problem(km.hide)
+            if hidden:
+                why = f"refusing to run students' code: {hidden}. {NOTHING}"
+                self.log.error(why)
+                raise NbGraderException(why)
+        if not problem:
+            self.log.info("students' kernels run confined by %s", confinement())
+
+
+NOTHING = "Nothing was graded: submitted/, autograded/ and gradebook.db are as they were."
 
 
 class ConfinedExecute(Execute):
@@ -139,6 +160,9 @@ class ConfinedExecute(Execute):
 
     def preprocess(self, nb, resources=None, km=None):
         self._start_cell(None)
+        student = (resources or {}).get("nbgrader", {}).get("student") or "?"
+        kind = "unconfined" if ConfinedKernelManager.unconfined_in(self.config) else confinement()
+        self.log.info("%s: the submission's kernel runs confined by %s", student, kind)
         try:
             return super().preprocess(nb, resources, km=km)
         except DeadKernelError:

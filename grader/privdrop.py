@@ -314,14 +314,19 @@ def acquire_slot():
 
 
 def _pids(uid):
+    """The live processes of ``uid`` (a zombie is dead already: its parent, or init, reaps it)."""
     out = []
     for entry in os.scandir("/proc"):
         if entry.name.isdigit():
             try:
-                if entry.stat().st_uid == uid:
-                    out.append(int(entry.name))
-            except OSError:
-                pass
+                if entry.stat().st_uid != uid:
+                    continue
+                with open(f"/proc/{entry.name}/stat", "rb") as f:
+                    state = f.read().rsplit(b")", 1)[1].split()[0]
+            except (OSError, IndexError):
+                continue
+            if state not in (b"Z", b"X"):
+                out.append(int(entry.name))
     return out
 
 

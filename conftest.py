@@ -5,10 +5,11 @@
   marker added here it deselects notebook execution whole.
 - A test that needs a system tool the machine may lack carries its marker (:data:`TOOLS`:
   ``confined`` for bubblewrap, ``privdrop`` for root and python3-seccomp (Docker's seccomp
-  constraint, tests/docker_seccomp.py), ``browser`` for Chromium, ``npm``). Without the tool the test is
-  skipped and the run ends with one line per tool: how many were skipped, why, and the command
-  that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run`` sets all three)
-  a missing tool fails those tests instead.
+  constraint, tests/docker_seccomp.py), ``browser`` for Chromium, ``npm``). Without the tool
+  the test is skipped and the run ends with one line per tool: how many were skipped, why,
+  and the command that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run``
+  sets all three; ``privdrop`` shares ``CONFINED_REQUIRED``) a missing tool fails those tests
+  instead.
 - The tests run as no student: the exercises' numbers depend on the student id
   (``course_lib/exercises/_variants.py``), and a JupyterHub sets ``JUPYTERHUB_USER`` in every
   server, so both id variables are removed before any test or notebook kernel starts.

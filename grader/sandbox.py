@@ -125,6 +125,10 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
         "PYTHONDONTWRITEBYTECODE": "1",
         "JUPYTER_RUNTIME_DIR": f"{work}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
+        # one BLAS/OpenMP thread: RLIMIT_NPROC counts threads too, and the course's matrices
+        # are small (OpenBLAS starts a thread per core, and fails where the limit binds)
+        "OMP_NUM_THREADS": "1",
+        "OPENBLAS_NUM_THREADS": "1",
     }
     if student:
         env["COURSE_STUDENT_ID"] = student

@@ -273,3 +273,213 @@ def test_a_python_behind_a_closed_folder_is_refused_with_the_chmod():
     if closed is not None:  # this machine's own Python (outside the Gradescope-like view)
         assert f"`chmod o+x {closed}`" in privdrop.problem(), privdrop.problem()
         print("outside the view, privdrop here says:", privdrop.problem())
+
+
+# --- real nbgrader and Gradescope's run_autograder under the constraint (slow) ---------------
+
+PS = "ps01"
+TOTAL = 14
+CELL_TIMEOUT = 6
+NBGRADER = Path(sys.executable).with_name("nbgrader")
+FORK_BOMB = """\
+import os, time
+_n = 0
+try:
+    while True:
+        if os.fork() == 0:
+            while True:  # every child forks too, for ever: bounded only by RLIMIT_NPROC
+                try:
+                    os.fork()
+                except OSError:
+                    time.sleep(0.05)
+        _n += 1
+except OSError as err:
+    print("fork refused after", _n, "children:", type(err).__name__)
+"""
+MEMORY_HOG = """\
+try:
+    _hog = bytearray(6 * 2**30)
+except MemoryError:
+    print("memory refused")
+"""
+FLOOD = "for _ in range(200):\n    print('x' * 10**6, flush=True)\n"
+ENDLESS = "import signal\nsignal.signal(signal.SIGINT, signal.SIG_IGN)\nwhile True:\n    pass\n"
+
+
+def _snoop(places, writes):
+    return f"""\
+import glob, os
+for top in {places!r}:
+    for p in glob.glob(top + "/**", recursive=True):
+        if os.path.isfile(p):
+            print("SEEN", p)
+            try:
+                print(open(p, errors="replace").read()[:2000])
+            except OSError as err:
+                print("REFUSED", p, type(err).__name__)
+for target in {writes!r}:
+    try:
+        os.makedirs(os.path.dirname(target), exist_ok=True)
+        with open(target, "a") as f:
+            f.write('{{"score": 1000.0, "output": "pwned"}}')
+        print("WROTE", target)
+    except OSError as err:
+        print("REFUSED", target, type(err).__name__)
+"""
+
+
+def _notebook(folder):
+    import nbformat
+
+    path = next(Path(folder).glob("*.ipynb"))
+    return path.name, nbformat.read(path, as_version=4)
+
+
+def _with(nb, code, cell_id=None):
+    import nbformat
+
+    nb = nbformat.from_dict(json.loads(json.dumps(nb)))
+    cell = next(c for c in nb.cells if c.id == cell_id or (not cell_id and "-answer" in c.id))
+    cell.source = code + "\n" + cell.source
+    return nb
+
+
+def _outputs(path):
+    """The text of every output of the notebook at ``path`` (not its sources)."""
+    nb = json.loads(Path(path).read_text())
+    outs = [o for c in nb["cells"] for o in c.get("outputs", [])]
+    return "".join(json.dumps(o) for o in outs)
+
+
+def _digest(*folders):
+    import hashlib
+
+    h = hashlib.sha256()
+    for folder in folders:
+        for p in sorted(Path(folder).rglob("*")):
+            if p.is_file() and "__pycache__" not in p.parts:
+                h.update(str(p).encode() + p.read_bytes())
+    return h.hexdigest()
+
+
+def _kernel_uids_idle():
+    return all(not privdrop._pids(privdrop.KERNEL_ID + n) for n in range(privdrop.SLOTS))
+
+
+def _attacks(solved, blank, places, writes):
+    return {
+        "p_solved": solved,
+        "p_blank": blank,
+        "p_snoop": _with(blank, _snoop(places, writes)),
+        "p_fork_bomb": _with(solved, FORK_BOMB),
+        "p_memory": _with(solved, MEMORY_HOG),
+        "p_flood": _with(solved, FLOOD),
+        "p_endless": _with(solved, ENDLESS, "which_are_rigid-answer"),
+    }
+
+
+def _expect(got, sid):
+    if sid in ("p_blank", "p_snoop"):
+        assert sum(got.values()) == 0, (sid, got)
+    elif sid == "p_endless":  # the checks before the endless cell keep their points
+        assert got["coords_by_projection"] == got["angle_from_lengths"] == 1, (sid, got)
+        assert sum(got.values()) == 2, (sid, got)
+    else:  # solved, and every contained attack: the rest graded
+        assert sum(got.values()) == TOTAL, (sid, got)
+
+
+@pytest.mark.slow_grading
+@pytest.mark.notebook_exec
+def test_nbgrader_autograde_of_a_class_under_dockers_constraint(tmp_path):
+    """`make course` + real `nbgrader autograde` as root under the seccomp filter: the
+    instructor's copy full marks, a blank copy 0, every attack 0 or contained."""
+    import nbformat
+    from nbgrader.api import Gradebook
+
+    from grader.course import write_course
+
+    course = tmp_path / "course"
+    write_course(course)
+    env = {**os.environ, "PATH": f"{NBGRADER.parent}:{os.environ['PATH']}"}
+    done = subprocess.run(
+        [str(NBGRADER), "generate_assignment", PS, "--create"],
+        cwd=course,
+        env=env,
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    name, solved = _notebook(course / "source" / PS)
+    _, blank = _notebook(course / "release" / PS)
+    places = [str(course), str(ROOT / "tools"), str(ROOT / "problem_sets")]
+    writes = [str(course / "gradebook.db"), str(ROOT / "grader" / "verify.py")]
+    writes.append(str(course / "source" / PS / name))
+    subs = _attacks(solved, blank, places, writes)
+    for sid, nb in subs.items():
+        (course / "submitted" / sid / PS).mkdir(parents=True)
+        nbformat.write(nb, course / "submitted" / sid / PS / name)
+    before = _digest(course / "source", ROOT / "grader", ROOT / "tools")
+    argv = [str(NBGRADER), "autograde", PS, "--create", f"--Execute.timeout={CELL_TIMEOUT}"]
+    done = under_docker(argv, env=env, cwd=course)
+    log = done.stdout + done.stderr
+    assert done.returncode == 0, log[-5000:]
+    assert "confined by privdrop" in log and "confined by bubblewrap" not in log, log[-3000:]
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        for sid in subs:
+            sub = gb.find_submission(PS, sid)
+            _expect({g.name[:-6]: g.score for nb in sub.notebooks for g in nb.grades}, sid)
+    snooped = _outputs(course / "autograded" / "p_snoop" / PS / name)
+    assert "SEEN" not in snooped and "WROTE" not in snooped, snooped[:3000]
+    assert snooped.count("REFUSED") == len(writes), snooped[:3000]
+    bomb = _outputs(course / "autograded" / "p_fork_bomb" / PS / name)
+    assert "fork refused after" in bomb, bomb[:2000]
+    assert "memory refused" in _outputs(course / "autograded" / "p_memory" / PS / name)
+    assert (course / "autograded" / "p_flood" / PS / name).stat().st_size < 2_000_000
+    assert _digest(course / "source", ROOT / "grader", ROOT / "tools") == before
+    assert _kernel_uids_idle()
+
+
+@pytest.mark.gradescope
+@pytest.mark.notebook_exec
+def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
+    """Gradescope's run_autograder as root under the seccomp filter, in a temporary
+    /autograder: the same cases, and an attack on results.json and the grader's files."""
+    import nbformat
+
+    from grader import gradescope
+
+    top = tmp_path / "autograder"
+    for member, data in gradescope.members(PS).items():
+        path = top / "source" / member
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(data)
+    env = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top)}
+    script = str(top / "source" / "grader" / "gradescope_run.py")
+    done = subprocess.run([sys.executable, script, "prepare"], env=env, capture_output=True)
+    assert done.returncode == 0, done.stderr[-3000:]
+    name, solved = _notebook(top / "course" / "source" / PS)
+    _, blank = _notebook(top / "course" / "release" / PS)
+    writes = [str(top / "results" / "results.json"), script]
+    writes.append(str(top / "source" / "tools" / "solutions" / "ch01.py"))
+    subs = _attacks(solved, blank, [str(top)], writes)
+    before = _digest(top / "source")
+    env |= {"ROTATIONS_PYTHON": sys.executable, "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT)}
+    for n, (sid, nb) in enumerate(subs.items()):
+        sub = top / "submission"
+        shutil.rmtree(sub, ignore_errors=True)
+        sub.mkdir()
+        nbformat.write(nb, sub / name)
+        meta = {"users": [{"sid": sid, "email": f"{sid}@example.edu", "id": n}]}
+        (top / "submission_metadata.json").write_text(json.dumps(meta))
+        (top / "results" / "results.json").unlink(missing_ok=True)
+        done = under_docker(["bash", str(top / "source" / "run_autograder")], env=env, cwd=top)
+        assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+        results = json.loads((top / "results" / "results.json").read_text())
+        assert results["extra_data"] == {"confinement": "privdrop"}, results
+        assert "Confinement of the student's code: privdrop." in results["output"], results
+        assert "pwned" not in json.dumps(results), results
+        _expect({t["name"]: t["score"] for t in results["tests"]}, sid)
+    snooped = _outputs(top / "course" / "autograded" / "p_snoop" / PS / name)
+    assert "SEEN" not in snooped and "WROTE" not in snooped, snooped[:3000]
+    assert _digest(top / "source") == before
+    assert _kernel_uids_idle()

@@ -462,6 +462,12 @@ def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
     writes = [str(top / "results" / "results.json"), script]
     writes.append(str(top / "source" / "tools" / "solutions" / "ch01.py"))
     subs = _attacks(solved, blank, [str(top)], writes)
+    # the fork bomb and the memory hog in one submission here (each alone above, through
+    # nbgrader; the flood is cut in the grader's process, whatever the confinement: above, and
+    # tests/test_grading_gradescope.py)
+    subs["p_contained"] = _with(solved, FORK_BOMB + MEMORY_HOG)
+    for sid in ("p_fork_bomb", "p_memory", "p_flood"):
+        del subs[sid]
     before = _digest(top / "source")
     env |= {"ROTATIONS_PYTHON": sys.executable, "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT)}
     for n, (sid, nb) in enumerate(subs.items()):
@@ -481,5 +487,8 @@ def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
         _expect({t["name"]: t["score"] for t in results["tests"]}, sid)
     snooped = _outputs(top / "course" / "autograded" / "p_snoop" / PS / name)
     assert "SEEN" not in snooped and "WROTE" not in snooped, snooped[:3000]
+    assert snooped.count("REFUSED") == len(writes), snooped[:3000]
+    contained = _outputs(top / "course" / "autograded" / "p_contained" / PS / name)
+    assert "fork refused after" in contained and "memory refused" in contained
     assert _digest(top / "source") == before
     assert _kernel_uids_idle()

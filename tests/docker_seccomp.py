@@ -96,6 +96,16 @@ def lay_out(repo, keep):
             os.chmod(entry.path, mode & 0o7770)
 
 
+def command(argv, repo, python_prefixes=()):
+    """The argv that runs ``argv`` under this launcher, in the view of ``repo``: what is under
+    ``/root`` among ``repo`` and ``python_prefixes`` (the Python installation and environment
+    of the grader: ``sys.base_prefix``, ``sys.prefix``) is mounted back."""
+    places = {os.path.realpath(p) for p in (*python_prefixes, repo)}
+    places = {p for p in places if p.startswith("/root/")}
+    keep = sorted(p for p in places if not any(p != q and p.startswith(q + "/") for q in places))
+    return ["/usr/bin/python3", os.path.abspath(__file__), "--view", str(repo), *keep, "--", *argv]
+
+
 def main(argv):
     if "--" not in argv:
         print(__doc__, file=sys.stderr)

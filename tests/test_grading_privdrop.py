@@ -27,23 +27,17 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+from docker_seccomp import command  # noqa: E402
+
 from grader import privdrop, sandbox  # noqa: E402
 
 pytestmark = pytest.mark.privdrop
-HARNESS = ROOT / "tests" / "docker_seccomp.py"
 MARKER = "ROTATIONS_GRADER_SECRET_41d9"
-
-
-def _keep():
-    """What the view mounts back under /root: the Python, the environment, the checkout."""
-    places = {os.path.realpath(p) for p in (sys.base_prefix, sys.prefix, ROOT)}
-    places = {p for p in places if p.startswith("/root/")}
-    return sorted(p for p in places if not any(p != q and p.startswith(q + "/") for q in places))
 
 
 def under_docker(argv, timeout=600, env=None, cwd=ROOT):
     """Run ``argv`` as root under Docker's constraint, in the Gradescope-like view."""
-    cmd = ["/usr/bin/python3", str(HARNESS), "--view", str(ROOT), *_keep(), "--", *argv]
+    cmd = command(argv, ROOT, (sys.base_prefix, sys.prefix))
     return subprocess.run(
         cmd, capture_output=True, text=True, timeout=timeout, env=env or os.environ, cwd=cwd
     )

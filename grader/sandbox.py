@@ -347,9 +347,10 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
 
         hide = List(
             Unicode(),
-            help="Folders the kernel must never see: exposing a folder that holds one, or "
-            "is inside one (but for the installed course_lib and the Python environment), "
-            "is an error.",
+            help="Folders the kernel must never see: under bubblewrap, exposing a folder that "
+            "holds one, or is inside one (but for the installed course_lib and the Python "
+            "environment), is an error; under privdrop, each is tried as the kernel's uid at "
+            "start, and one it can list, read or write is an error naming the chmod to run.",
         ).tag(config=True)
         unconfined = Bool(
             False,

@@ -19,8 +19,9 @@ What it may read is decided by permissions, checked empirically before any submi
 
 - it must reach the Python installation, the environment and a read-only copy of the
   installed ``course_lib`` (:func:`lib_copy`; the copy, so that an editable install inside the
-  instructor's repository needs no change of modes): :func:`problem` starts that Python as
-  the kernel's uid and imports nothing but finds and opens the packages the kernel needs;
+  instructor's repository needs no change of modes): :func:`problem` opens, in a child that
+  has dropped to the kernel's uid, the Python, its standard library and the packages the
+  kernel needs;
   where a folder on the way is closed to others (a Python under ``/root``, mode 0700), it
   refuses and names the folder and the ``chmod`` that opens it;
 - it must read and write nothing in the hidden folders (the course directory with
@@ -45,7 +46,6 @@ import pwd
 import shutil
 import signal
 import stat
-import subprocess
 import sys
 import tempfile
 import time
@@ -105,26 +105,39 @@ def _accounts():
     return None
 
 
-PYTHON_PROBE = """\
-import importlib.util, json, sys
-out = {}
-for name in sys.argv[1:]:
-    try:
+def _needed(python):
+    """The files the kernel's Python must open: itself, its standard library, the packages."""
+    import importlib.util
+    import sysconfig
+
+    files = [os.path.realpath(python), os.path.join(sysconfig.get_path("stdlib"), "os.py")]
+    files.append(os.path.join(sys.prefix, "pyvenv.cfg") if sys.prefix != sys.base_prefix else "")
+    for name in MODULES:
         spec = importlib.util.find_spec(name)
-        with open(spec.origin, "rb") as f:
-            f.read(1)
-        out[name] = "ok"
-    except Exception as err:
-        out[name] = f"{type(err).__name__}: {err}"
-print(json.dumps(out))
-"""
+        files.append(spec.origin if spec and spec.origin else f"<{name} not installed>")
+    return [f for f in files if f]
+
+
+def _opens(python, files):
+    """As the kernel's uid: which of ``files`` it cannot open (and run, for ``python``)."""
+    bad = []
+    for path in files:
+        try:
+            with open(path, "rb") as f:
+                f.read(1)
+        except OSError as err:
+            bad.append(f"{path}: {err.strerror}")
+    if not os.access(python, os.X_OK):  # the real uid is the kernel's here: a real check
+        bad.append(f"{python}: not executable")
+    return bad
 
 
 @cache
 def problem(python=sys.executable):
     """Why the privilege drop cannot confine a kernel here, or None when it can: the grader
-    must run as root, the kernel's ids must be free, and ``python`` with the packages of the
-    kernel must start as the kernel's uid (tried: started as that uid)."""
+    must run as root, the kernel's ids must be free, and ``python``, its standard library and
+    the packages of the kernel must open as the kernel's uid (tried, in a child process that
+    has dropped to that uid)."""
     if os.geteuid() != 0:
         return "the grader is not root (only root can start the kernel as another user)"
     taken = _accounts()
@@ -139,27 +152,13 @@ def problem(python=sys.executable):
                 f"`chmod o+x {closed}` (it lets others pass, not list), or install Python "
                 "and the environment outside it"
             )
-    ids = dict(user=KERNEL_ID, group=KERNEL_ID, extra_groups=[])
+    files = _needed(python)
     try:
-        done = subprocess.run(
-            [python, "-I", "-c", PYTHON_PROBE, *MODULES],
-            capture_output=True,
-            text=True,
-            timeout=60,
-            cwd="/",
-            env={"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8"},
-            **ids,
-        )
-    except (OSError, subprocess.SubprocessError) as exc:
-        return f"setuid to {KERNEL_ID} or starting {python} as that user failed: {exc}"
-    try:
-        found = json.loads(done.stdout)
-    except ValueError:
-        why = (done.stderr.strip().splitlines() or ["no message"])[-1][:200]
-        return f"{python} does not start as uid {KERNEL_ID}: {why}"
-    bad = {k: v for k, v in found.items() if v != "ok"}
+        bad = _as_uid(KERNEL_ID, lambda: _opens(python, files))
+    except OSError as err:
+        return f"setuid to {KERNEL_ID} failed here: {err}"
     if bad:
-        return f"as uid {KERNEL_ID}, the kernel's packages cannot be read: {bad}"
+        return f"as uid {KERNEL_ID}, the kernel's Python cannot be read: {'; '.join(bad[:3])}"
     return None
 
 
@@ -197,30 +196,37 @@ def _candidates(top, expose, limit=PROBE_LIMIT):
     return out
 
 
-def _try_as(uid, paths):
-    """In a child that has dropped to ``uid``: which of ``paths`` it can list, read, write or
-    create in (a list of ``(path, what)``)."""
+def _as_uid(uid, task):
+    """``task()`` (JSON-able) run in a forked child that has dropped to ``uid``; its result.
+    OSError when the child could not become ``uid``."""
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: system calls only, then _exit
-        found = []
+        code = 3
         try:
             os.close(read)
             os.setgroups([])
             os.setresgid(uid, uid, uid)
             os.setresuid(uid, uid, uid)
-            for path in paths:
-                found += _attempts(path)
-            os.write(write, json.dumps(found).encode())
+            code = 0
+            os.write(write, json.dumps(task()).encode())
         finally:
-            os._exit(0)
+            os._exit(code)
     os.close(write)
     chunks = []
     while chunk := os.read(read, 65536):
         chunks.append(chunk)
     os.close(read)
-    os.waitpid(pid, 0)
-    return json.loads(b"".join(chunks) or b"[]")
+    _, status = os.waitpid(pid, 0)
+    if os.waitstatus_to_exitcode(status) == 3:
+        raise OSError(errno.EPERM, f"the child could not become uid {uid}")
+    return json.loads(b"".join(chunks) or b"null")
+
+
+def _try_as(uid, paths):
+    """In a child that has dropped to ``uid``: which of ``paths`` it can list, read, write or
+    create in (a list of ``(path, what)``)."""
+    return _as_uid(uid, lambda: [found for path in paths for found in _attempts(path)]) or []
 
 
 def _attempts(path):

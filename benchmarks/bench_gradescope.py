@@ -11,7 +11,13 @@ root under Docker's seccomp constraint (``tests/docker_seccomp.py``, which needs
 ``python3-seccomp``), where bubblewrap cannot start and the privilege drop
 (``grader/privdrop.py``) confines the kernel. Goal: privdrop at most 1.10 x bubblewrap. The
 launcher's own cost (a mount namespace and the view, a Python start) is measured alone and
-printed; it is counted in privdrop's times, not taken off.
+printed; it is counted in privdrop's times, and the ratio is also printed without it. The ratio
+is the median over submissions of privdrop's wall time over bubblewrap's for the same
+submission (graded one after the other: the load of a shared machine evens out).
+
+CPU (of the processes ``run_autograder`` waited for) is not comparable between the two:
+bubblewrap's kernel dies with its PID namespace when bwrap is stopped and its CPU is not
+counted (about 0.04 s counted for a kernel that used 0.8 s), the privdrop kernel's is.
 
     python benchmarks/bench_gradescope.py [--runs 6] [--only bubblewrap|privdrop] [ps01 ...]
 """
@@ -115,7 +121,6 @@ def main(argv=None):
     kinds = [args.only] if args.only else ["bubblewrap", "privdrop"]
     print(f"{'set':5} {'confinement':11} {'median s':>9} {'worst s':>8} {'median CPU':>11}  scores")
     walls = {k: [] for k in kinds}
-    cpus = {k: [] for k in kinds}
     for ps in args.sets:
         top = Path(tempfile.mkdtemp(prefix="bench-gradescope-"))
         runs = {k: [] for k in kinds}
@@ -130,7 +135,6 @@ def main(argv=None):
         for c in kinds:
             w = [r[0] for r in runs[c]]
             walls[c] += w
-            cpus[c] += [r[1] for r in runs[c]]
             print(
                 f"{ps:5} {c:11} {statistics.median(w):9.1f} {max(w):8.1f} "
                 f"{statistics.median(r[1] for r in runs[c]):11.1f}  {[r[2] for r in runs[c]]}"
@@ -140,12 +144,15 @@ def main(argv=None):
         verdict = "met" if med < GOAL else "NOT met"
         print(f"{c}: median {med:.1f} s per submission (goal < {GOAL:.0f} s: {verdict})")
     if len(kinds) == 2:
-        wall = statistics.median(walls["privdrop"]) / statistics.median(walls["bubblewrap"])
-        cpu = statistics.median(cpus["privdrop"]) / statistics.median(cpus["bubblewrap"])
-        verdict = "met" if wall <= RATIO_GOAL else "NOT met"
+        pairs = list(zip(walls["privdrop"], walls["bubblewrap"], strict=True))
+        launcher = launcher_cost()
+        ratio = statistics.median(p / b for p, b in pairs)
+        net = statistics.median((p - launcher) / b for p, b in pairs)
+        verdict = "met" if ratio <= RATIO_GOAL else "NOT met"
         print(
-            f"privdrop / bubblewrap: wall {wall:.2f}, CPU {cpu:.2f} (goal <= {RATIO_GOAL:.2f}: "
-            f"{verdict}); the launcher alone {launcher_cost():.2f} s, counted in privdrop"
+            f"privdrop / bubblewrap, median of {len(pairs)} paired submissions: {ratio:.2f} "
+            f"(goal <= {RATIO_GOAL:.2f}: {verdict}); the test launcher alone {launcher:.2f} s, "
+            f"without it {net:.2f}"
         )
     print(f"load average {os.getloadavg()[0]:.1f}")
     return 0

@@ -1,6 +1,7 @@
 """Run a command as root under Docker's constraint: no new user namespace, no mount.
 
     /usr/bin/python3 tests/docker_seccomp.py [--view REPO KEEP...] -- COMMAND ARGS...
+    /usr/bin/python3 tests/docker_seccomp.py --view-only REPO KEEP... -- COMMAND ARGS...
 
 Docker's default seccomp profile refuses ``unshare(2)`` and ``clone(2)`` with a namespace flag
 to a process without ``CAP_SYS_ADMIN``, root included (``EPERM``), and answers ``clone3(2)``
@@ -17,6 +18,9 @@ tmpfs into which only the folders ``KEEP`` under ``/root`` (the Python installat
 mounted back, and REPO (the checkout, which holds the environment ``REPO/.venv``) is overlaid
 so that others may pass it but not list it, and may not enter anything in it but ``.venv``
 (on Gradescope the environment is ``/opt/rotations-venv``, the source folder mode 0700).
+``--view-only`` lays out the same view without the constraint (bubblewrap can start): the
+benchmark grades with both confinements in the same view, so that the view's own cost (its
+overlay) is in both.
 """
 
 from __future__ import annotations
@@ -96,14 +100,15 @@ def lay_out(repo, keep):
             os.chmod(entry.path, mode & 0o7770)
 
 
-def command(argv, repo, python_prefixes=()):
+def command(argv, repo, python_prefixes=(), constraint=True):
     """The argv that runs ``argv`` under this launcher, in the view of ``repo``: what is under
     ``/root`` among ``repo`` and ``python_prefixes`` (the Python installation and environment
     of the grader: ``sys.base_prefix``, ``sys.prefix``) is mounted back."""
     places = {os.path.realpath(p) for p in (*python_prefixes, repo)}
     places = {p for p in places if p.startswith("/root/")}
     keep = sorted(p for p in places if not any(p != q and p.startswith(q + "/") for q in places))
-    return ["/usr/bin/python3", os.path.abspath(__file__), "--view", str(repo), *keep, "--", *argv]
+    view = "--view" if constraint else "--view-only"
+    return ["/usr/bin/python3", os.path.abspath(__file__), view, str(repo), *keep, "--", *argv]
 
 
 def main(argv):
@@ -112,15 +117,16 @@ def main(argv):
         return 2
     split = argv.index("--")
     options, command = argv[:split], argv[split + 1 :]
-    if options[:1] == ["--view"]:
+    if options[:1] in (["--view"], ["--view-only"]):
         if os.environ.get(IN_NAMESPACE) != "1":
             env = {**os.environ, IN_NAMESPACE: "1"}
             unshare = ["unshare", "--mount", "--propagation", "private"]
             os.execvpe("unshare", [*unshare, sys.executable, __file__, *argv], env)
         lay_out(options[1], options[2:])
     os.environ.pop(IN_NAMESPACE, None)
-    drop_capabilities()
-    load_filter()
+    if options[:1] != ["--view-only"]:
+        drop_capabilities()
+        load_filter()
     os.execvp(command[0], command)
     return 1
 

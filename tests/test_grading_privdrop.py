@@ -106,7 +106,7 @@ scratch = os.path.dirname(ipykernel.connect.get_connection_file())
 attempt("write_scratch", lambda: open(scratch + "/fill", "w").write("x"))
 attempt("big_file", lambda: open(out["home"] + "/big", "wb").write(bytes(65 * 2**20)))
 attempt("memory", lambda: len(bytearray(5 * 2**30)))
-open("/tmp/left-by-the-kernel", "w").write("x")
+open(f"/tmp/left-by-kernel-{os.getuid()}", "w").write("x")  # removed after the kernel
 if os.fork() == 0:  # a child that leaves the kernel's session, to outlive it
     os.setsid()
     if os.fork() == 0:
@@ -148,7 +148,7 @@ async def main(code, hide):
         await km.shutdown_kernel(now=True)
     from grader.privdrop import _pids
     left = _pids(uid)  # live processes (a zombie is dead already)
-    files = [f for f in ("/tmp/left-by-the-kernel", home) if os.path.exists(f)]
+    files = [f for f in (f"/tmp/left-by-kernel-{uid}", home) if os.path.exists(f)]
     print("AFTER" + json.dumps({"processes": left, "files": files, "kind": km.kind}))
     print("".join(texts))
 asyncio.run(main(sys.argv[1], sys.argv[2:]))
@@ -171,6 +171,7 @@ def probe(tmp_path_factory):
     env = {**os.environ, MARKER: "grader-only"}
     done = under_docker([sys.executable, "-c", DRIVER, code, str(ROOT), str(course)], env=env)
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
+    assert "\nPROBE{" in done.stdout, done.stdout[-3000:]
     after = next(x for x in done.stdout.splitlines() if x.startswith("AFTER"))
     line = next(x for x in done.stdout.splitlines() if x.startswith("PROBE"))
     assert (course / "gradebook.db").read_text() == "grades"

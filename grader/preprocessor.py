@@ -113,7 +113,7 @@ class ConfinedExporter(NotebookExporter):
                 why = f"refusing to run students' code: {hidden}. {NOTHING}"
                 self.log.error(why)
                 raise NbGraderException(why)
-        if not problem:
+        if not problem and not ConfinedKernelManager.unconfined_in(self.config):
             self.log.info("students' kernels run confined by %s", confinement())
 
 
@@ -161,8 +161,10 @@ class ConfinedExecute(Execute):
     def preprocess(self, nb, resources=None, km=None):
         self._start_cell(None)
         student = (resources or {}).get("nbgrader", {}).get("student") or "?"
-        kind = "unconfined" if ConfinedKernelManager.unconfined_in(self.config) else confinement()
-        self.log.info("%s: the submission's kernel runs confined by %s", student, kind)
+        if ConfinedKernelManager.unconfined_in(self.config):
+            self.log.info("%s: the submission's kernel runs UNCONFINED (opted in)", student)
+        else:
+            self.log.info("%s: the submission's kernel runs confined by %s", student, confinement())
         try:
             return super().preprocess(nb, resources, km=km)
         except DeadKernelError:

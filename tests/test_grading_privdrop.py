@@ -236,10 +236,18 @@ for folder in (top + "/tools", top + "/tools/solutions"):
     os.chmod(folder, 0o755)
 os.chmod(top + "/tools/solutions/ch01.py", 0o644)
 first = sandbox.hidden_problem([top])[0]
+from traitlets.config import Config
+from nbgrader.converters.base import NbGraderException
+from grader.preprocessor import ConfinedExporter
+try:  # what `nbgrader autograde` does first, before any submission is read
+    ConfinedExporter(config=Config({"ConfinedKernelManager": {"hide": [top]}}))
+    refused = None
+except NbGraderException as err:
+    refused = str(err)
 os.chmod(top, 0o700)
 privdrop.hidden_problem.cache_clear()
 second = sandbox.hidden_problem([top])[0]
-print(json.dumps({"top": top, "first": first, "second": second}))
+print(json.dumps({"top": top, "first": first, "second": second, "refused": refused}))
 """
 
 
@@ -249,6 +257,8 @@ def test_a_hidden_folder_readable_by_the_kernels_uid_is_refused_with_the_chmod()
     out = json.loads(done.stdout)
     assert f"`chmod 700 {out['top']}`" in out["first"], out
     assert "ch01.py" in out["first"] and "read" in out["first"], out
+    assert out["refused"].startswith("refusing to run students' code: the kernel's user"), out
+    assert f"`chmod 700 {out['top']}`" in out["refused"] and "Nothing was graded" in out["refused"]
     assert out["second"] is None, out
 
 

@@ -192,7 +192,8 @@ test-slow: $(STAMP)
 		-m "slow_grading or gradescope or slow_variants" \
 		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py \
 		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py \
-		tests/test_report_roundtrip.py tests/test_grading_intake_nbgrader.py
+		tests/test_report_roundtrip.py tests/test_grading_intake_nbgrader.py \
+		tests/test_grading_privdrop.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
 # axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every

@@ -4,10 +4,12 @@
   test item without markers, so ``-m 'not notebook_exec'`` used to keep all of them; with the
   marker added here it deselects notebook execution whole.
 - A test that needs a system tool the machine may lack carries its marker (:data:`TOOLS`:
-  ``confined`` for bubblewrap, ``browser`` for Chromium, ``npm``). Without the tool the test is
-  skipped and the run ends with one line per tool: how many were skipped, why, and the command
-  that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run`` sets all three)
-  a missing tool fails those tests instead.
+  ``confined`` for bubblewrap, ``privdrop`` for root and python3-seccomp (Docker's seccomp
+  constraint, tests/docker_seccomp.py), ``browser`` for Chromium, ``npm``). Without the tool
+  the test is skipped and the run ends with one line per tool: how many were skipped, why,
+  and the command that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run``
+  sets all three; ``privdrop`` shares ``CONFINED_REQUIRED``) a missing tool fails those tests
+  instead.
 - The tests run as the course's example student (``COURSE_STUDENT_ID`` is ``"(example)"``,
   the default numbers of every exercise, as in the instructor's solved copies): the exercises'
   numbers depend on the student id (``course_lib/exercises/_identity.py``), a JupyterHub sets
@@ -48,6 +50,12 @@ TOOLS = {
         "Linux only)",
         "CONFINED_REQUIRED",
     ),
+    "privdrop": Tool(
+        "root and libseccomp's Python bindings for /usr/bin/python3 (python3-seccomp)",
+        "the privilege-drop confinement under Docker's seccomp constraint",
+        "sudo apt-get install python3-seccomp (Debian/Ubuntu), and run the tests as root",
+        "CONFINED_REQUIRED",
+    ),
     "browser": Tool(
         "Chromium (/usr/bin/chromium)",
         "the tests in a real browser",
@@ -63,6 +71,8 @@ def missing(marker):
     """Why the tool of ``marker`` cannot be used here, or None when it can."""
     if marker == "confined":
         return _confinement_problem()
+    if marker == "privdrop":
+        return _privdrop_problem()
     if marker == "browser":
         return None if os.access("/usr/bin/chromium", os.X_OK) else "/usr/bin/chromium not found"
     if marker == "npm":
@@ -72,10 +82,25 @@ def missing(marker):
 
 def _confinement_problem():
     try:
-        from grader.sandbox import confinement_problem
+        from grader.sandbox import bubblewrap_problem
     except ImportError:  # the student edition has no grader/
         return "the instructor's grader/ is not here"
-    return confinement_problem()
+    return bubblewrap_problem()
+
+
+def _privdrop_problem():
+    import subprocess
+
+    if os.geteuid() != 0:
+        return "the tests are not run as root"
+    if shutil.which("unshare") is None:
+        return "unshare (util-linux) not found"
+    probe = ["/usr/bin/python3", "-c", "import seccomp"]
+    try:
+        done = subprocess.run(probe, capture_output=True, text=True, timeout=60)
+    except OSError as err:
+        return f"/usr/bin/python3: {err}"
+    return None if done.returncode == 0 else "python3-seccomp is not installed"
 
 
 def pytest_configure(config):

@@ -311,8 +311,9 @@ def main(argv=None):
     if problem:
         print(
             f"make course: no confined kernel on this machine ({problem}): `nbgrader autograde` "
-            f"will refuse to run students' code until bubblewrap is installed ({INSTALL}), "
-            "unless you opt in to unconfined grading (docs/grading.md)",
+            f"will refuse to run students' code until bubblewrap is installed ({INSTALL}) or "
+            "it runs as root (the privilege drop), unless you opt in to unconfined grading "
+            "(docs/grading.md)",
             file=sys.stderr,
         )
     if not (Path(args.course) / "templates" / FEEDBACK).is_dir():

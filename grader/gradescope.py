@@ -25,9 +25,11 @@ README, which name the markers they handle) an nbgrader marker. Gradescope does 
 zip to students; what they see is ``results.json``, which holds only points, the checker's
 hints and the grader's notes (never cell outputs or the solutions); the tests run the leak
 gate on the results of the solved copy and of attacks. The risk that stays: the solutions are
-in the grading container, next to the student's code; bubblewrap's confined kernel cannot see
-them. Without bubblewrap the autograder refuses to run the notebook and exits 1
-(``--unconfined`` makes it run it anyway, with the solutions in reach: docs/grading.md).
+in the grading container, next to the student's code; the confined kernel cannot see them
+(bubblewrap's view, or, in Gradescope's Docker container where bubblewrap cannot start, the
+privilege drop: folders closed to the kernel's uid). With neither, the autograder refuses to
+run the notebook and exits 1 (``--unconfined`` makes it run it anyway, with the solutions in
+reach: docs/grading.md).
 setup.sh brings a Python the pins install on (:data:`MIN_PYTHON`; Ubuntu 22.04's universe
 ``python3.11``) and ends with ``gradescope_run.py selftest``.
 """

@@ -30,7 +30,8 @@ The root is ``/autograder``; the environment variable ``ROTATIONS_AUTOGRADER_ROO
 for the tests only. ``ROTATIONS_CELL_TIMEOUT`` and ``ROTATIONS_TIME_BUDGET`` (seconds) shorten
 the per-cell and whole-run limits, for the tests too.
 
-**Without a confined kernel** (:func:`confinement`, the one place that decides it) the
+**Without a confined kernel** (bubblewrap, or the privilege drop of a root grader:
+:func:`confinement`, the one place that decides it) the
 submission is not run and run_autograder exits 1, unless the zip was built with
 ``--unconfined`` (file ``source/UNCONFINED``): then students' code runs as root in the
 grading container, which holds the solutions (docs/grading.md).
@@ -340,13 +341,14 @@ def _intake(top, expected):
 
 
 def confinement():
-    """``(name, problem)`` of the confinement this autograder uses: the one place that
-    decides it (``problem`` is None when it can start)."""
-    from grader.sandbox import confinement_problem
+    """``(name, problem)`` of the confinement this autograder uses: bubblewrap, else the
+    privilege drop (a root grader: Gradescope's Docker container), the first that can start
+    (:func:`grader.sandbox.confinement`); ``problem`` is None when one can start."""
+    from grader import sandbox
 
     if (SOURCE / UNCONFINED_FLAG).is_file():
         return "unconfined (opted in: UNCONFINED)", None
-    return "bubblewrap", confinement_problem()
+    return sandbox.confinement() or "none", sandbox.confinement_problem()
 
 
 def _autograde(course, ps, student, budget):
@@ -412,6 +414,8 @@ def _grade(top, started, budget, course):
     name, problem = confinement()
     if problem:
         raise GraderFault(f"the confined kernel cannot start here ({problem})")
+    (top / "results").mkdir(parents=True, exist_ok=True)
+    os.chmod(top / "results", 0o700)  # closed to the privdrop kernel's uid (docs/grading.md)
     roster_file = SOURCE / ROSTER
     try:
         who = identity(metadata, load([roster_file] if roster_file.is_file() else []))
@@ -436,6 +440,7 @@ def _grade(top, started, budget, course):
     results = results_for(course, ps, student, started)
     if note:
         results["output"] += " " + note
+    results["output"] += f" Confinement of the student's code: {name}."
     results["extra_data"]["confinement"] = name
     results["extra_data"]["identity"].update(given=who.given, graded_as=who.key, how=who.how)
     if who.note:

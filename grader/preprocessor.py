@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
 import time
 
 import nbformat
@@ -50,7 +51,13 @@ from . import (
 from .diagnose import CHECKED, entry  # issue 34
 from .id_preprocessors import SHOWN, CourseIdentity, ShownNumbers, shown_phrase
 from .identity import RosterError, write_report
-from .sandbox import INSTALL, ConfinedKernelManager, confinement_problem
+from .sandbox import (
+    INSTALL,
+    ConfinedKernelManager,
+    confinement,
+    confinement_problem,
+    hidden_problem,
+)
 from .verify import student_parameters, verdict
 
 __all__ = [
@@ -79,8 +86,9 @@ def note_output(note):
 def refusal(problem):
     """What ``nbgrader autograde`` says when it will not run students' code unconfined."""
     return (
-        f"refusing to run students' code: the confined grading kernel needs bubblewrap, and "
-        f"{problem}. Unconfined, a submission runs as you: it can read the solutions "
+        f"refusing to run students' code: the confined grading kernel needs bubblewrap, or a "
+        f"grader run as root for the privilege drop, and here {problem}. Unconfined, a "
+        f"submission runs as you: it can read the solutions "
         f"(tools/solutions), other submissions and the gradebook, and change them. Install "
         f"bubblewrap ({INSTALL}; Linux only) and run the command again. Or, only for work you "
         f"trust, grade without confinement: add --ConfinedKernelManager.unconfined=True to "
@@ -112,6 +120,16 @@ class ConfinedExporter(NotebookExporter):
         elif problem:
             self.log.error(refusal(problem))
             raise NbGraderException(refusal(problem))
+        elif confinement() == "privdrop":
+            km = ConfinedKernelManager(config=self.config)
+            shutil.rmtree(km.scratch, ignore_errors=True)
+            hidden, _ = hidden_problem(km.hide)
+            if hidden:
+                why = f"refusing to run students' code: {hidden}. {NOTHING}"
+                self.log.error(why)
+                raise NbGraderException(why)
+        if not problem and not ConfinedKernelManager.unconfined_in(self.config):
+            self.log.info("students' kernels run confined by %s", confinement())
         coursedir = getattr(self.parent, "coursedir", None)
         if coursedir is not None:  # autograde copies no other file of submitted/ (intake.py)
             coursedir.ignore = [*coursedir.ignore, "*", ".*"]
@@ -123,6 +141,9 @@ class ConfinedExporter(NotebookExporter):
             filename, getattr(self.parent, "coursedir", None), resources, self.log
         )
         return self.from_notebook_node(nb, resources=resources, **kw)
+
+
+NOTHING = "Nothing was graded: submitted/, autograded/ and gradebook.db are as they were."
 
 
 class ConfinedExecute(Execute):
@@ -172,6 +193,11 @@ class ConfinedExecute(Execute):
         if nb.metadata.get(intake.NOTE):  # refused at intake: GuardCells gave every grade cell 0
             return nb, resources
         self._deadline, self._over = None, False  # the budget starts at the first cell
+        student = (resources or {}).get("nbgrader", {}).get("student") or "?"
+        if ConfinedKernelManager.unconfined_in(self.config):
+            self.log.info("%s: the submission's kernel runs UNCONFINED (opted in)", student)
+        else:
+            self.log.info("%s: the submission's kernel runs confined by %s", student, confinement())
         try:
             nb, resources = super().preprocess(nb, resources, km=km)
             if not self._over:

@@ -33,13 +33,20 @@ Debian's ``bubblewrap`` (``bwrap``) with an **allow-list** view of the machine:
 Run as ``python sandbox.py --scratch DIR --expose DIR ... -- -f FILE`` (the kernel manager
 does); it only uses the standard library.
 
-**Without bubblewrap** (macOS, Windows, a Linux machine without it or without user namespaces)
-there is no confinement: :func:`confinement_problem` says why, and ``nbgrader autograde``
-refuses to run students' code (:class:`grader.preprocessor.ConfinedExporter`) unless the
-instructor opts in with ``ConfinedKernelManager.unconfined = True``. Then the kernel runs as
-the instructor (``--unconfined``): the same cleared environment, ``-P``, the installed
-``course_lib`` imported first and the address-space and file-size limits, but it can read and
-write whatever the instructor can.
+**Where bubblewrap cannot start** and the grader runs as root (Gradescope's Docker container,
+any container whose seccomp profile refuses user namespaces, a root hub), the kernel is
+confined by a privilege drop instead (:mod:`grader.privdrop`: a dedicated unprivileged uid,
+an empty home, the same cleared environment and limits, the hidden folders closed to it by
+permissions checked at start). :func:`confinement` says which confinement is used here.
+
+**With neither** (macOS, Windows, a Linux machine without bubblewrap or user namespaces where
+the grader is not root) there is no confinement: :func:`confinement_problem` says why, and
+``nbgrader autograde`` refuses to run students' code
+(:class:`grader.preprocessor.ConfinedExporter`) unless the instructor opts in with
+``ConfinedKernelManager.unconfined = True``. Then the kernel runs as the instructor
+(``--unconfined``): the same cleared environment, ``-P``, the installed ``course_lib``
+imported first and the address-space and file-size limits, but it can read and write
+whatever the instructor can.
 """
 
 from __future__ import annotations
@@ -57,6 +64,8 @@ from pathlib import Path
 __all__ = [
     "ConfinedKernelManager",
     "bwrap_command",
+    "bubblewrap_problem",
+    "confinement",
     "confinement_problem",
     "kernel_env",
     "BOOT",
@@ -77,7 +86,14 @@ LIMITS = {
     "RLIMIT_FSIZE": 64 * 2**20,
     "RLIMIT_NPROC": 64,
     "RLIMIT_CORE": 0,
+    "RLIMIT_NOFILE": 1024,
+    # CPU seconds of each process (SIGXCPU, then SIGKILL): above any notebook's honest run and
+    # the Gradescope run's 480 s budget, so it only ends a kernel that spins past every limit
+    "RLIMIT_CPU": 900,
 }
+#: The confinements, in the order they are tried; $ROTATIONS_CONFINEMENTS (a comma list) may
+#: leave some out (never add one, never allow unconfined grading).
+KINDS = ("bubblewrap", "privdrop")
 #: How to install bubblewrap, for the messages that say it is missing.
 INSTALL = "sudo apt-get install bubblewrap (Debian, Ubuntu; Fedora: sudo dnf install bubblewrap)"
 #: The system folders mounted read-only (or re-created as the same symbolic links).
@@ -110,6 +126,10 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
         "PYTHONDONTWRITEBYTECODE": "1",
         "JUPYTER_RUNTIME_DIR": f"{work}/.runtime",
         "PYTHONPATH": os.pathsep.join(path),
+        # one BLAS/OpenMP thread: RLIMIT_NPROC counts threads too, and the course's matrices
+        # are small (OpenBLAS starts a thread per core, and fails where the limit binds)
+        "OMP_NUM_THREADS": "1",
+        "OPENBLAS_NUM_THREADS": "1",
     }
     if student:  # the grader's id wins over the notebook's set_student_id (course_lib._identity)
         env["COURSE_GRADER_ID"] = student
@@ -117,15 +137,75 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
 
 
 @cache
-def confinement_problem():
-    """Why the confined kernel cannot start on this machine, or None when it can.
+def _choice():
+    allowed = os.environ.get("ROTATIONS_CONFINEMENTS", ",".join(KINDS)).split(",")
+    why = []
+    for kind in KINDS:
+        if kind not in allowed:
+            why.append(f"{kind}: left out by ROTATIONS_CONFINEMENTS")
+            continue
+        problem = bubblewrap_problem() if kind == "bubblewrap" else _privdrop().problem()
+        if problem is None:
+            return kind, None
+        why.append(f"{kind}: {problem}")
+    return None, "; ".join(why)
 
-    bubblewrap must be on ``PATH`` and able to make the sandbox's namespaces here (a kernel
-    may forbid unprivileged user namespaces: bwrap is then installed but fails).
+
+def confinement():
+    """Which confinement runs a student's kernel here: ``"bubblewrap"`` when bwrap can make
+    its sandbox, else ``"privdrop"`` when the grader is root and can start the kernel's Python
+    as the kernel's unprivileged uid (:mod:`grader.privdrop`), else None
+    (:func:`confinement_problem` says why).
 
     Examples
     --------
-    >>> confinement_problem() is None or "bwrap" in confinement_problem()
+    >>> confinement() in ("bubblewrap", "privdrop", None)
+    True
+    """
+    return _choice()[0]
+
+
+def confinement_problem():
+    """Why no confinement can start on this machine (each one's reason), or None when one can.
+
+    Examples
+    --------
+    >>> (confinement_problem() is None) == (confinement() is not None)
+    True
+    """
+    return _choice()[1]
+
+
+def hidden_problem(hide):
+    """Privdrop only: why the kernel's uid could reach something in the folders ``hide``, or
+    None (tried as that uid, :func:`grader.privdrop.hidden_problem`); the Python, the
+    environment and the kernel's copy of the installed ``course_lib`` are exposed."""
+    import course_lib
+
+    privdrop = _privdrop()
+    copy = privdrop.lib_copy(str(Path(course_lib.__file__).resolve().parent))
+    return privdrop.hidden_problem(tuple(hide), (sys.base_prefix, sys.prefix, copy)), copy
+
+
+def _privdrop():
+    try:
+        from . import privdrop
+    except ImportError:  # run as a script (the kernel's launcher)
+        import privdrop
+    return privdrop
+
+
+@cache
+def bubblewrap_problem():
+    """Why bubblewrap cannot start its sandbox on this machine, or None when it can.
+
+    bubblewrap must be on ``PATH`` and able to make the sandbox's namespaces here (a kernel
+    may forbid unprivileged user namespaces, a container's seccomp profile refuses them: bwrap
+    is then installed but fails).
+
+    Examples
+    --------
+    >>> bubblewrap_problem() is None or "bwrap" in bubblewrap_problem()
     True
     """
     bwrap = shutil.which("bwrap")
@@ -200,6 +280,25 @@ def _exec_unconfined(scratch, kernel, python, path, student=""):
     os.execve(python, [python, "-P", "-c", BOOT, *kernel], env)
 
 
+def _exec_privdrop(args, kernel):
+    """The kernel as the unprivileged ``args.privdrop_uid`` (:mod:`grader.privdrop`); root."""
+    uid, home = args.privdrop_uid, args.home
+    # the scratch folder: the kernel reads its connection file and binds its ipc sockets there
+    # until it answers, then the kernel manager seals it (seal_scratch)
+    os.chown(args.scratch, 0, uid)
+    os.chmod(args.scratch, 0o1770)
+    connection = kernel[kernel.index("-f") + 1]
+    os.chown(connection, 0, uid)
+    os.chmod(connection, 0o640)
+    os.chdir(home)
+    _limit()
+    _privdrop().drop(uid)
+    os.umask(0o077)
+    env = kernel_env(args.pythonpath, work=home, student=args.student_id)
+    env["TMPDIR"] = os.path.join(home, "tmp")
+    os.execve(args.python, [args.python, "-P", "-c", BOOT, *kernel], env)
+
+
 def main(argv=None):
     """Replace this process with the confined kernel (the kernel manager stops bwrap)."""
     parser = argparse.ArgumentParser(description="start ipykernel under bubblewrap")
@@ -209,10 +308,15 @@ def main(argv=None):
     parser.add_argument("--pythonpath", action="append", default=[])
     parser.add_argument("--unconfined", action="store_true", help="no bubblewrap (opted in)")
     parser.add_argument("--student-id", default="", help="nbgrader's student id of the work")
+    parser.add_argument("--privdrop-uid", type=int, help="no bubblewrap: run as this uid")
+    parser.add_argument("--home", help="the kernel's home (--privdrop-uid)")
     parser.add_argument("kernel", nargs=argparse.REMAINDER)
     args = parser.parse_args(argv)
     kernel = args.kernel[1:] if args.kernel[:1] == ["--"] else args.kernel
     quiet = os.open(os.devnull, os.O_WRONLY)  # ipykernel's banner; errors still go to stderr
+    if args.privdrop_uid is not None:
+        os.dup2(quiet, 1)
+        _exec_privdrop(args, kernel)
     if args.unconfined:
         os.dup2(quiet, 1)
         _exec_unconfined(args.scratch, kernel, args.python, args.pythonpath, args.student_id)
@@ -244,9 +348,10 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
 
         hide = List(
             Unicode(),
-            help="Folders the kernel must never see: exposing a folder that holds one, or "
-            "is inside one (but for the installed course_lib and the Python environment), "
-            "is an error.",
+            help="Folders the kernel must never see: under bubblewrap, exposing a folder that "
+            "holds one, or is inside one (but for the installed course_lib and the Python "
+            "environment), is an error; under privdrop, each is tried as the kernel's uid at "
+            "start, and one it can list, read or write is an error naming the chmod to run.",
         ).tag(config=True)
         unconfined = Bool(
             False,
@@ -286,25 +391,50 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
             return sorted(str(p) for p in paths)
 
         @property
+        def kind(self):
+            """The confinement of this kernel: "bubblewrap", "privdrop" or "unconfined"."""
+            if self.unconfined:
+                return "unconfined"
+            kind = confinement()
+            if kind is None:
+                raise RuntimeError(f"no confinement for the kernel here: {confinement_problem()}")
+            return kind
+
+        @property
         def kernel_spec(self):
             if self._kernel_spec is None:
                 import course_lib
 
                 argv = [sys.executable, str(Path(__file__).resolve())]
-                argv += [f"--expose={p}" for p in self._expose()]
                 lib = Path(course_lib.__file__).resolve().parent
-                argv += [f"--pythonpath={lib.parent}", "--python", sys.executable]
+                if self.kind == "privdrop":
+                    argv += self._privdrop_args()
+                else:
+                    argv += [f"--expose={p}" for p in self._expose()]
+                    argv += [f"--pythonpath={lib.parent}"]
+                argv += ["--python", sys.executable]
                 argv += [f"--scratch={self.scratch}"] + ["--unconfined"] * self.unconfined
                 argv += [f"--student-id={self.student}"] * bool(self.student)
                 argv += ["--", "-f", "{connection_file}"]
                 self._kernel_spec = KernelSpec(
                     argv=argv,
-                    display_name="Python 3 (confined)",
+                    display_name=f"Python 3 (confined: {self.kind})",
                     language="python",
                     interrupt_mode="message",
                     env={},
                 )
             return self._kernel_spec
+
+        def _privdrop_args(self):
+            """The hidden folders checked as the kernel's uid (refused: RuntimeError), a slot,
+            a fresh home; the launcher's arguments."""
+            privdrop = _privdrop()
+            problem, copy = hidden_problem(self.hide)
+            if problem:
+                raise RuntimeError(f"privdrop confinement refused: {problem}")
+            self._uid, self._lock = privdrop.acquire_slot()
+            self._home = privdrop.make_home(self._uid)
+            return [f"--privdrop-uid={self._uid}", f"--home={self._home}", f"--pythonpath={copy}"]
 
         def seal_scratch(self):
             """Once the kernel has bound its ipc sockets (it answered ``kernel_info``): the
@@ -328,6 +458,9 @@ else:  # imported by nbgrader (the instructor's process): the kernel manager
             await super()._async_cleanup_resources(restart=restart)
             if not restart:
                 shutil.rmtree(self.scratch, ignore_errors=True)
+                if getattr(self, "_lock", None) is not None:  # privdrop: its uid's processes,
+                    _privdrop().clean(self._uid, self._home, self._lock)  # home, slot
+                    self._lock = None
 
         cleanup_resources = _async_cleanup_resources
 

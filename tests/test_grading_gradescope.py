@@ -132,6 +132,7 @@ def test_solved_copy_gets_full_marks_and_results_hold_no_solution(autograder):
     assert results["score"] == TOTAL, results
     assert all(t["status"] == "passed" for t in results["tests"])
     assert len(results["tests"]) == 7
+    assert results["extra_data"] == {"confinement": "bubblewrap"}, results  # which confinement
     no_leak(results)
 
 

@@ -30,9 +30,10 @@ OPT_IN = "--ConfinedKernelManager.unconfined=True"
 
 
 def no_bwrap_env(**extra):
-    """The environment with a PATH of the venv's programs only: no bwrap on it."""
+    """The environment with a PATH of the venv's programs only: no bwrap on it; and no
+    privilege drop either (a root grader would use it: tests/test_grading_privdrop.py)."""
     env = {k: v for k, v in os.environ.items() if not k.endswith("_REQUIRED")}
-    return {**env, "PATH": str(BIN), **extra}
+    return {**env, "PATH": str(BIN), "ROTATIONS_CONFINEMENTS": "bubblewrap", **extra}
 
 
 def test_the_confinement_probe_names_the_missing_bwrap():
@@ -40,7 +41,9 @@ def test_the_confinement_probe_names_the_missing_bwrap():
     done = subprocess.run(
         [sys.executable, "-c", code], cwd=ROOT, env=no_bwrap_env(), capture_output=True, text=True
     )
-    assert done.stdout.strip() == "bwrap is not on PATH", done.stdout + done.stderr
+    assert done.stdout.strip() == (
+        "bubblewrap: bwrap is not on PATH; privdrop: left out by ROTATIONS_CONFINEMENTS"
+    ), done.stdout + done.stderr
 
 
 NEEDS_BWRAP = """

@@ -103,8 +103,15 @@ def _title(chapter):
     return (
         f"# Problem set {chapter} · {chapter_title(chapter)}\n\n"
         f"The graded exercises of chapter {chapter} ([{chap}](../notebooks/{chap})): "
-        f"{_tally(chapter)}. Read the chapter first; every exercise uses only what it shows."
+        f"{_tally(chapter)}. {_reads(chapter)}"
     )
+
+
+def _reads(chapter):
+    """What the problem set needs: the bank's ``READS`` (a chapter that also uses earlier ones
+    says which), or the chapter alone."""
+    default = "Read the chapter first; every exercise uses only what it shows."
+    return getattr(exercise_bank.chapter_module(chapter), "READS", default)
 
 
 def pointer_source(chapter):

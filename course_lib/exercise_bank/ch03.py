@@ -137,9 +137,9 @@ $<<point>>$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then
 smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
         answer=Value(shape=(2,)),
-        tip="Chapter 3 solves such an ODE with the matrix exponential (Result (123), "
-        "Definition 6). As in its section 'Closing the Exponential', look at the powers of A "
-        "first: which simple matrix is A²?",
+        tip="Chapter 3 solves such an ODE with the matrix exponential (Definition 6 and the "
+        "Result right after it). As in its section 'Closing the Exponential', look at the "
+        "powers of A first: which simple matrix is A²?",
         mistakes={
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
             "a > 0 the point turns counterclockwise.",

@@ -152,8 +152,10 @@ def test_rodrigues_circle_message_names_the_axis_point():
 
 # --- plot_orbit and plot_spinning_body (chapter 3's figures of eq. 119 and 121) ---------------
 
+FIGURES = settings(max_examples=10, deadline=None)  # each example draws a whole figure
 
-@FAST
+
+@FIGURES
 @given(
     seed=st.integers(0, 2**31 - 1),
     speed=st.floats(0.2, 2.0),
@@ -188,7 +190,7 @@ def test_orbit_rejects_a_zero_axis_a_zero_radius_and_nan(w, rho):
     plt.close("all")
 
 
-@FAST
+@FIGURES
 @given(seed=st.integers(0, 2**31 - 1))
 def test_spinning_body_turns_its_corner_about_the_plate_normal(seed):
     R = so3.random_rotations(1, seed=seed)[0]

@@ -82,3 +82,42 @@ def test_every_fold_is_a_bare_heading_that_hides_something(path):
         assert nxt is not None and not (cc._level(nxt) is not None and cc._level(nxt) <= level), (
             f"{path.name} {cell.id}: the fold hides nothing"
         )
+
+
+def test_reading_minutes_follow_the_model_per_section(tmp_path):
+    """Issue 37: the main path's reading time, per ## section, from words, displays, code
+    cells, code lines on screen, figures and widgets; folded parts and the setup cell count
+    nothing."""
+    fold = nbformat.v4.new_markdown_cell("### Going deeper: more")  # 4 words on screen
+    fold.metadata["jp-MarkdownHeadingCollapsed"] = True
+    setup = nbformat.v4.new_code_cell("import sys\nimport os")
+    setup["id"] = "course-setup"
+    figure = nbformat.v4.new_code_cell("fig = draw()\nplotting.show('Figure: a circle.')")
+    figure.metadata["jupyter"] = {"source_hidden": True}
+    cells = [
+        setup,
+        nbformat.v4.new_markdown_cell("# Title\n\n" + "word " * 138),  # 140 words: 1 min
+        nbformat.v4.new_markdown_cell("## Part\n\n$$x = 1$$ and $y$ here"),  # 4 words + display
+        nbformat.v4.new_code_cell("a = 1\nb = 2"),
+        figure,
+        fold,
+        nbformat.v4.new_markdown_cell("word " * 500),  # folded: not counted
+        nbformat.v4.new_code_cell("explorer()"),  # folded: not counted
+    ]
+    sections = cc.minutes(_notebook(tmp_path, cells))
+    assert [name for name, _ in sections] == ["Title", "Part"]
+    title, part = (sec for _, sec in sections)
+    assert (title["words"], title["minutes"]) == (140, 1.0)
+    m = cc.READING_MODEL
+    assert (part["words"], part["displays"], part["cells"], part["lines"]) == (9, 1, 2, 2)
+    expected = 9 / m["wpm"] + m["display"] + 2 * m["cell"] + 2 * m["line"] + m["figure"]
+    assert part["minutes"] == pytest.approx(expected) and part["widgets"] == 0
+    assert "**total**" in cc.minutes_report(_notebook(tmp_path, cells))
+
+
+@pytest.mark.parametrize("path", [p for p in CHAPTERS if p.name[:2] in ("03", "05")], ids=str)
+def test_chapters_3_and_5_read_in_an_hour(path):
+    """Issue 37: the main path of chapters 03 and 05 reads in 60 minutes or less (the model of
+    tools/chapter_counts.py, calibrated on the issue's reader)."""
+    total = sum(sec["minutes"] for _, sec in cc.minutes(path))
+    assert total <= 60, cc.minutes_report(path)

@@ -234,6 +234,11 @@ def _other(v, k):
     return out
 
 
+def _floats(v):
+    """A numeric reference answer as a float array."""
+    return np.array([float(e) for e in _flat_numbers(v)])
+
+
 def _times_rows(v, signs):
     return np.array(v, dtype=float) * np.array(signs)[:, None]
 
@@ -257,7 +262,17 @@ WRONG = [
     ("vb_from_va", lambda r: _other(r, 2), "at least one component is wrong"),
     ("unit_tangent", lambda r: 2 * r, "not a unit vector"),
     ("unit_tangent", lambda r: [-sp.sin(t), sp.cos(t), 0], "does not point along ṗ(t)"),
-    ("ode_shifted", lambda r: [r[0], 2 * r[1]], "x(0) = x(1) e^{−a·1}"),
+    ("ode_shifted", lambda r: [r[0], 2 * r[1]], "put t = 1 into (106) and solve for x(0)"),
+    # issue 37: (1, 0, 0) is the line of the yaw and roll columns, not their normal
+    ("unreachable_omega", lambda r: [1, 0, 0], "yaw and roll columns of E both lie along it"),
+    ("unreachable_omega", lambda r: 1.5 * _floats(r), "length 1.5: it must be a unit vector"),
+    ("quaternion_of_turn", lambda r: _floats(r) + [0.2, 0, 0, 0], "must be a unit vector"),
+    ("compose_quaternions", lambda r: 0.5 * _floats(r), "must be a unit vector"),
+    # issue 37: an angle outside the statement's range is told so, per entry
+    ("proper_euler_angles", lambda r: _floats(r) + [0, 2 * np.pi, 0], "β = "),
+    ("proper_euler_angles", lambda r: _floats(r) + [0, 2 * np.pi, 0], "outside [−π, 0]"),
+    ("angle_from_ros", lambda r: 4.0, "θ = 4 lies outside [0, π]"),
+    ("angle_between_quaternions", lambda r: -0.5, "outside [0, π]"),
     (
         "spatial_angular_velocity",
         lambda r: [r[0], r[1], sp.Pow(r[2] ** 2, sp.S.Half, evaluate=False)],

@@ -26,7 +26,9 @@ from course_lib.plotting import (  # noqa: E402
     axes2d,
     axes3d,
     draw_pendulum,
+    plot_orbit,
     plot_rodrigues_circle,
+    plot_spinning_body,
 )
 from course_lib.tolerance import TOL  # noqa: E402
 
@@ -146,3 +148,68 @@ def test_rodrigues_circle_rejects_bad_input(w, q):
 def test_rodrigues_circle_message_names_the_axis_point():
     with pytest.raises(ValueError, match=f"q lies on the axis.*TOL = {TOL:g}"):
         plot_rodrigues_circle([1, 0, 0], [2, 0, 0], 1.0)
+
+
+# --- plot_orbit and plot_spinning_body (chapter 3's figures of eq. 119 and 121) ---------------
+
+FIGURES = settings(max_examples=10, deadline=None)  # each example draws a whole figure
+
+
+@FIGURES
+@given(
+    seed=st.integers(0, 2**31 - 1),
+    speed=st.floats(0.2, 2.0),
+    height=st.floats(-0.8, 0.8),
+    rho=st.floats(0.1, 1.0),
+    phase=angles,
+)
+def test_orbit_velocity_is_tangent_with_speed_omega_times_rho(seed, speed, height, rho, phase):
+    w = speed * so3.random_rotations(1, seed=seed)[0][:, 0]
+    fig, _, parts = plot_orbit(w, height=height, rho=rho, phase=phase)
+    plt.close(fig)
+    p, centre, v = parts["p"], parts["centre"], parts["v"]
+    assert np.isclose(np.linalg.norm(p - centre), rho) and np.isclose(parts["rho"], rho)
+    assert np.allclose(np.cross(centre, w), 0.0, atol=TOL)  # the centre lies on the axis
+    assert np.isclose((p - centre) @ w, 0.0, atol=TOL)  # the radius is across the axis
+    assert np.isclose(np.linalg.norm(v), speed * rho)  # eq. (118) with rho for r
+    assert np.isclose(v @ (p - centre), 0.0, atol=TOL) and np.isclose(v @ w, 0.0, atol=TOL)
+
+
+def test_orbit_labels_every_part_it_draws():
+    fig, ax, _ = plot_orbit([0.2, 0.3, 1.0])
+    _render(fig)
+    labels = set(_ax_texts(ax))
+    plt.close(fig)
+    assert {r"$\omega$", "$p$", "$r$", r"$\rho$", "$v$"} <= labels
+
+
+@pytest.mark.parametrize("w, rho", [([0, 0, 0], 0.9), ([0, 0, 1], 0.0), ([0, 0, np.nan], 0.9)])
+def test_orbit_rejects_a_zero_axis_a_zero_radius_and_nan(w, rho):
+    with pytest.raises(ValueError):
+        plot_orbit(w, rho=rho)
+    plt.close("all")
+
+
+@FIGURES
+@given(seed=st.integers(0, 2**31 - 1))
+def test_spinning_body_turns_its_corner_about_the_plate_normal(seed):
+    R = so3.random_rotations(1, seed=seed)[0]
+    fig, ax, parts = plot_spinning_body(R)
+    plt.close(fig)
+    assert np.allclose(parts["omega"], R[:, 2])
+    assert np.allclose(parts["q_dot"], np.cross(R[:, 2], parts["q"]))
+    # the corner is on the plate: its offset from the centre lies in the plate's plane
+    assert np.isclose((parts["q"] - R[:, 2]) @ R[:, 2], 0.0, atol=TOL)
+
+
+def test_spinning_body_labels_frame_axis_body_and_point():
+    fig, ax, _ = plot_spinning_body(so3.exp([0.5, -np.sqrt(0.75), 0.0], 0.45))
+    _render(fig)
+    labels = set(_ax_texts(ax))
+    plt.close(fig)
+    assert {r"$\omega$", "$q$", "$B$", r"$\dot q = \omega \times q$"} <= labels
+
+
+def test_spinning_body_refuses_a_matrix_that_is_not_a_rotation():
+    with pytest.raises(ValueError, match="rotation"):
+        plot_spinning_body(np.diag([1.0, 1.0, -1.0]))

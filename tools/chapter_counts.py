@@ -16,6 +16,9 @@ true}``). For each chapter it prints
 - notes on the notes: Markdown cells on screen with a "**Note on the notes" paragraph;
 - the limits, and "ok" or what is over.
 
+``--minutes`` prints instead an estimate of the reading time of the main path, per ``##``
+section (:func:`minutes`; issue 37's goal: one sitting of 60 minutes or less).
+
 Exit status 1 when a chapter is over a limit. Targets: chapters 01-03 at most 1.15 times the
 words of their section of the notes; chapters beyond the notes at most 3,500 words; at most 150
 lines of code, no output longer than 20 lines, at most 2 notes on the notes.
@@ -125,6 +128,80 @@ def count(path):
     )
 
 
+#: The reading-time model of :func:`minutes`: rendered words per minute of maths prose, and
+#: minutes per display equation, code cell (run it, read its output), code line on screen,
+#: figure and live widget. Calibrated on issue 37's reader, who took 60-75 min for chapter 03
+#: and 55-70 for chapter 05 as they were then: the model gives 67 and 60.
+READING_MODEL = {"wpm": 140, "display": 0.6, "cell": 0.5, "line": 0.12, "figure": 1.5, "widget": 3}
+_DISPLAY = re.compile(r"\$\$.*?\$\$", re.S)
+_INLINE = re.compile(r"\$[^$]+\$")
+
+
+def _section_minutes(sec):
+    m = READING_MODEL
+    return (
+        sec["words"] / m["wpm"]
+        + m["display"] * sec["displays"]
+        + m["cell"] * sec["cells"]
+        + m["line"] * sec["lines"]
+        + m["figure"] * sec["figures"]
+        + m["widget"] * sec["widgets"]
+    )
+
+
+def minutes(path):
+    """The estimated reading time of the main path of a chapter, per ``##`` section.
+
+    The cells on screen (:func:`on_screen`; the setup cell left out) are grouped under the
+    level-1 and level-2 headings. A section counts rendered words (a display equation is timed
+    on its own, an inline formula is one word), display equations, code cells, code lines on
+    screen, figures (a ``plotting.show`` call) and widgets (an ``explorer(`` or
+    ``animation(`` call); :data:`READING_MODEL` turns them into minutes.
+
+    Returns
+    -------
+    list of (str, dict)
+        The section's heading and its counts, with ``"minutes"``.
+    """
+    cells = json.loads(Path(path).read_text(encoding="utf-8"))["cells"]
+    sections = []
+    for cell in on_screen(cells):
+        src = _source(cell)
+        if cell.get("id") == "course-setup":
+            continue
+        heading = re.match(r"^#{1,2}\s+(.*)", src) if cell["cell_type"] == "markdown" else None
+        if heading or not sections:
+            keys = ("words", "displays", "cells", "lines", "figures", "widgets")
+            sections.append((heading.group(1) if heading else "(top)", dict.fromkeys(keys, 0)))
+        sec = sections[-1][1]
+        if cell["cell_type"] == "markdown":
+            sec["displays"] += len(_DISPLAY.findall(src))
+            sec["words"] += len(_INLINE.sub(" M ", _DISPLAY.sub(" ", src)).split())
+        else:
+            hidden = cell.get("metadata", {}).get("jupyter", {}).get("source_hidden")
+            sec["cells"] += 1
+            sec["lines"] += 0 if hidden else sum(1 for ln in src.split("\n") if ln.strip())
+            sec["figures"] += "plotting.show(" in src
+            sec["widgets"] += "explorer(" in src or "animation(" in src
+    for _, sec in sections:
+        sec["minutes"] = _section_minutes(sec)
+    return sections
+
+
+def minutes_report(path):
+    """A Markdown table of :func:`minutes`, with the total."""
+    rows = ["| section | words | code lines | figures | minutes |", "|---|---|---|---|---|"]
+    total = 0.0
+    for name, sec in minutes(path):
+        total += sec["minutes"]
+        shown = sec["figures"] + sec["widgets"]
+        rows.append(
+            f"| {name} | {sec['words']} | {sec['lines']} | {shown} | {sec['minutes']:.1f} |"
+        )
+    rows.append(f"| **total** | | | | **{total:.0f}** |")
+    return f"{Path(path).name}\n" + "\n".join(rows)
+
+
 def report(counts):
     lim = counts.limits()
     over = counts.over()
@@ -140,8 +217,13 @@ def report(counts):
 
 
 def main(argv=None):
-    paths = [Path(p) for p in (argv if argv is not None else sys.argv[1:])]
+    args = list(argv if argv is not None else sys.argv[1:])
+    timed = "--minutes" in args
+    paths = [Path(p) for p in args if p != "--minutes"]
     paths = paths or sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+    if timed:
+        print("\n\n".join(minutes_report(p) for p in paths))
+        return 0
     results = [count(p) for p in paths]
     for c in results:
         print(report(c))

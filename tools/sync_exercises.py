@@ -103,7 +103,7 @@ def _title(chapter):
     return (
         f"# Problem set {chapter} · {chapter_title(chapter)}\n\n"
         f"The graded exercises of chapter {chapter} ([{chap}](../notebooks/{chap})): "
-        f"{_tally(chapter)}. Read the chapter first; every exercise uses only what it shows."
+        f"{_tally(chapter)}. {_reads(chapter)}"
         + (
             " Start with your student id (next section): some exercises give every student "
             "numbers of their own."
@@ -143,6 +143,13 @@ def _id_source(chapter):
         'set_student_id("")  # laptop, Binder, Colab: your e-mail between the quotes; hub: leave\n'
         f"your_numbers({chapter})"
     )
+
+
+def _reads(chapter):
+    """What the problem set needs: the bank's ``READS`` (a chapter that also uses earlier ones
+    says which), or the chapter alone."""
+    default = "Read the chapter first; every exercise uses only what it shows."
+    return getattr(exercise_bank.chapter_module(chapter), "READS", default)
 
 
 def pointer_source(chapter):

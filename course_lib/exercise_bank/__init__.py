@@ -6,7 +6,8 @@ recognise known mistakes, never an expected answer nor any value of one).
 
 Each chapter module defines ``CHAPTER`` (its number), ``SETUP`` (the import cell of the
 notebook's exercise section) and ``EXERCISES`` (a list of
-:class:`course_lib.exercises.Exercise`).
+:class:`course_lib.exercises.Exercise`); optionally ``READS``, the sentence of the problem set's
+header that says what it needs (default: the chapter alone).
 """
 
 from importlib import import_module

@@ -11,6 +11,12 @@ SETUP = (
 
 _W = tuple(omega)
 
+#: What problem set 3 needs besides chapter 3 (its header says so).
+READS = (
+    "Read chapter 3 first. The exercises also use chapter 2's hat map $\\hat\\omega$, and 3.8 "
+    "uses chapter 2's Proposition 6, $R\\hat\\omega R^T = (R\\omega)^\\wedge$."
+)
+
 EXERCISES = [
     Exercise(
         name="ode_shifted",
@@ -24,12 +30,13 @@ measured twice: $x(<<t1>>) = <<x1>>$ and $x(<<t2>>) = <<x2>>$. Using the solutio
 $a$ and the initial value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sympy values are fine).
 """,
         answer=Value(shape=(2,)),
-        tip="Every solution is x(t) = e^{at} x(0); divide the two measurements to get rid of x(0).",
+        tip="Write the solution (106) down twice, once at each measurement time. Which "
+        "combination of the two equations no longer contains x(0)?",
         mistakes={
-            "interval": "x(<<t2>>)/x(<<t1>>) = e^{a(<<t2>> − <<t1>>)}: the two measurements "
-            "are <<gap>> time units apart, not <<t2>>.",
-            "at_zero": "x(<<t1>>) = <<x1>> is measured at t = <<t1>>, not at t = 0: "
-            "x(0) = x(<<t1>>) e^{−a·<<t1>>}.",
+            "interval": "the ratio of the two measurements depends on the time between them: "
+            "they are <<gap>> time units apart, not <<t2>>.",
+            "at_zero": "x(<<t1>>) = <<x1>> is measured at t = <<t1>>, not at t = 0: put "
+            "t = <<t1>> into (106) and solve for x(0).",
         },
         variants=Variants("ch03_growth", {"t1": 1, "x1": 3, "t2": 3, "x2": 12, "gap": 2}),
     ),
@@ -45,7 +52,8 @@ A pendulum of length $r = <<r>>$ m swings with the angle $\theta(t) = \frac{\pi}
 (118), find the speed of its tip at $t = \pi/<<q>>$ s, in m/s. Give a number.
 """,
         answer=Value(shape=()),
-        tip="Differentiate θ(t) (chain rule: the <<k>> comes out), then evaluate at t = π/<<q>>.",
+        tip="A speed comes from the rate of the angle, not from the angle: see how chapter 3 "
+        "gets ‖v‖ of the pendulum from θ(t), (117)-(118).",
         mistakes={
             "angle": "that is r θ(t) at t = π/<<q>>, the arc length from the bottom: a length, "
             "not a speed; the speed uses the angular rate θ̇ (equation (117)).",
@@ -129,8 +137,9 @@ $<<point>>$ at time $t = 1$. Solve the ODE for general $a$ and $x_0$ first, then
 smallest $a > 0$ and the $x_0$ for which this happens. Give the pair $(a,\ x_0)$.
 """,
         answer=Value(shape=(2,)),
-        tip="The solution is x(t) = e^{At} x(0), the matrix exponential of §4; compute A² and "
-        "sort the series of e^{At} into even and odd powers. Then impose the condition at t = 1.",
+        tip="Chapter 3 solves such an ODE with the matrix exponential (Definition 6 and the "
+        "Result right after it). As in its section 'Closing the Exponential', look at the "
+        "powers of A first: which simple matrix is A²?",
         mistakes={
             "direction": "check the direction of turning: ẋ₂(0) = a x₁(0) = a x₀, so for "
             "a > 0 the point turns counterclockwise.",
@@ -177,11 +186,12 @@ $\hat\omega$. Here $\omega$ changes with $t$, so $R(t)$ is not $e^{\hat\omega t}
 $\omega(t)$; give a 3-vector in `t`.
 """,
         answer=Expr(shape=(3,), domain=(t,)),
-        tip="Ṙ = Ṙ_x R_z + R_x Ṙ_z; then R_x ê₃ R_xᵀ is the hat of R_x e₃ (Proposition 6).",
+        tip="Use the product rule on R = R_x R_z: ṘRᵀ splits into one term per turn. Chapter "
+        "2's Proposition 6 turns each term into a hat.",
         mistakes={
             "body": "that is the body angular velocity (RᵀṘ = ω̂_b); the exercise asks for ṘRᵀ.",
-            "sum": "the z axis is turned by the first rotation: the second term is the hat of "
-            "R_x(t) e₃, not of e₃.",
+            "sum": "the term of the turn about z is not the hat of e₃ alone: look again at what "
+            "stands on either side of it in ṘRᵀ.",
         },
     ),
 ]

@@ -1,5 +1,7 @@
 r"""Exercises of chapter 5 (orientation in practice: Euler angles, gimbal lock, quaternions)."""
 
+from math import pi
+
 from course_lib.exercises._model import Exercise, Value, Variants
 
 CHAPTER = 5
@@ -7,6 +9,13 @@ SETUP = (
     "import numpy as np\nimport sympy as sp\n\n"
     "from course_lib import euler, quaternion, so3\n"
     "from course_lib.exercises import check, parameters"
+)
+
+#: What problem set 5 needs besides chapter 5 (its header says so).
+READS = (
+    "Read chapter 5 first. Two exercises also use chapter 4: 5.3 its rule that a turn about a "
+    "world axis multiplies on the left (§2), 5.6 its geodesic (§7) and chapter 2's "
+    "Proposition 6."
 )
 
 EXERCISES = [
@@ -20,7 +29,7 @@ EXERCISES = [
 Give the unit quaternion $q = (w, x, y, z)$, scalar first, of the turn by $<<angle>>°$ about the
 axis through $<<direction>>$ (a direction, not yet a unit vector), with $w > 0$. Give a 4-vector.
 """,
-        answer=Value(shape=(4,)),
+        answer=Value(shape=(4,), unit=True),
         tip="q = (cos θ/2, ω sin θ/2) with a unit axis ω and θ in radians.",
         mistakes={
             "full_angle": "a quaternion holds half the angle: cos θ/2 and sin θ/2, not θ.",
@@ -42,7 +51,7 @@ A ROS message holds the orientation `x: <<x>>, y: <<y>>, z: <<z>>, w: <<w>>` (sc
 It is a turn about the $<<axis>>$ axis. By what angle $\theta$, in radians, between $0$ and
 $\pi$? Give a number.
 """,
-        answer=Value(angle=True),
+        answer=Value(angle=True, ranges=(("θ", 0.0, pi),)),
         tip="Put the four numbers in this course's order first, then use what §4 says the "
         "scalar part of a turn's quaternion is.",
         mistakes={
@@ -62,7 +71,7 @@ A body starts at the identity. It turns by $<<a1>>°$ about the **world** $<<axi
 by $<<a2>>°$ about the **world** $<<axis2>>$ axis. Give the unit quaternion $(w, x, y, z)$ of its
 final orientation, with $w > 0$. Give a 4-vector.
 """,
-        answer=Value(shape=(4,)),
+        answer=Value(shape=(4,), unit=True),
         tip="Quaternions compose like matrices: a turn about a fixed (world) axis multiplies "
         "from the left.",
         mistakes={
@@ -92,7 +101,11 @@ with $\beta \in (-\pi, 0)$. Multiply out the product for general angles, read th
 the entries, and give the triple with $\beta \in [-\pi, 0]$ and $\alpha, \gamma \in [-\pi, \pi]$:
 the 3-vector $(\alpha, \beta, \gamma)$ in radians.
 """,
-        answer=Value(shape=(3,), angle=True),
+        answer=Value(
+            shape=(3,),
+            angle=True,
+            ranges=(("α", -pi, pi), ("β", -pi, 0.0), ("γ", -pi, pi)),
+        ),
         tip="Write out R_z(α) R_y(β) R_z(γ) first (sympy helps). Look for the row and the "
         "column in which only two of the three angles appear. atan2 reads the quadrant from "
         "the signs of both its arguments: here sin β < 0, so mind the sign each entry gets.",
@@ -120,14 +133,15 @@ at this orientation these $\omega_b$ do not fill space. Give the unit vector $n$
 coordinates, that is orthogonal to every $\omega_b$ the rates can produce; of the two such
 unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
 """,
-        answer=Value(shape=(3,)),
+        answer=Value(shape=(3,), unit=True),
         tip="Build E column by column at this orientation (each column is the axis of one turn "
         "in body coordinates, §3). Which columns span the same line? A vector orthogonal to "
         "two independent vectors comes from their cross product.",
         mistakes={
-            "world_frame": "that vector is orthogonal to the turn axes written in world "
-            "coordinates; the exercise asks for body coordinates (each axis seen from the "
-            "body, through the transposes of the later turns).",
+            "world_frame": "the rates do produce that vector: at this pitch the yaw and roll "
+            "columns of E both lie along it. n must be orthogonal to every column of E, in body "
+            "coordinates. (If you found it as the normal of the turn axes, those were written in "
+            "world coordinates.)",
             "no_transpose": "a later turn acts on an earlier turn's axis through its "
             "transpose, R_x(φ)ᵀ, not R_x(φ): check the sign of the roll angle in your "
             "columns.",
@@ -179,7 +193,7 @@ Two orientations arrive from two sources: $q_0 = <<q0>>$ from `course_lib`
 $\theta \in [0, \pi]$ of the rotation that takes the first orientation to the second,
 $R_0^TR_1$, in radians. Give a number.
 """,
-        answer=Value(angle=True),
+        answer=Value(angle=True, ranges=(("θ", 0.0, pi),)),
         tip="Put both in one order first. Which quaternion takes the first orientation to the "
         "second, what does its scalar part tell about its angle, and what does the double "
         "cover change?",

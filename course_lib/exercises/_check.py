@@ -378,6 +378,39 @@ def _rotation_hint(v):
     return None
 
 
+def _pi_text(x):
+    """A range's end as the statement writes it: 0, π, −π/2, 2π/3 ... (else the number)."""
+    from fractions import Fraction
+
+    f = Fraction(x / np.pi).limit_denominator(12)
+    if abs(float(f) * np.pi - x) > 1e-12:
+        return f"{x:.4g}".replace("-", "−")
+    if f == 0:
+        return "0"
+    num = {1: "", -1: "−"}.get(f.numerator, f"{f.numerator}".replace("-", "−"))
+    return f"{num}π" + (f"/{f.denominator}" if f.denominator != 1 else "")
+
+
+def _range_hint(ranges, v):
+    """Which entry lies outside the range the statement asks for (the student's own entry)."""
+    for (name, low, high), x in zip(ranges, np.ravel(v)):
+        if not low - E.TOL <= x <= high + E.TOL:
+            return (
+                f"your {name} = {x:.4g} lies outside [{_pi_text(low)}, {_pi_text(high)}], the "
+                "range the exercise asks for: bring it into that range (adding or subtracting "
+                "2π gives the same turn), or pick the other solution the exercise describes."
+            )
+    return None
+
+
+def _unit_hint(v):
+    """A vector whose length is not 1 where a unit vector is asked for."""
+    length = float(np.linalg.norm(v))
+    if abs(length - 1.0) <= 1e-6:
+        return None
+    return f"your answer has length {length:.4g}: it must be a unit vector (length 1)."
+
+
 def _value_hint(ex, fp, v):
     spec, name = ex.answer, ex.name
     for mid, rec in fp["mistakes"].items():
@@ -393,6 +426,7 @@ def _value_hint(ex, fp, v):
     if len(spec.shape) == 2 and _all_right(name, fp, v.reshape(spec.shape).T.ravel(), spec.shape):
         return _TRANSPOSE
     hint = _angle_hint(name, fp, v, spec.shape) if spec.angle else None
+    hint = hint or _range_hint(spec.ranges, v) or (_unit_hint(v) if spec.unit else None)
     hint = hint or (_rotation_hint(v) if spec.rotation else None)
     if hint:
         return hint

@@ -141,11 +141,25 @@ class Value:
     angle : bool
         The answer is an angle in radians: a wrong one is also tested for degrees and for the
         other sign.
+    unit : bool
+        The answer is a unit vector (or unit quaternion): a wrong one whose length is not 1 is
+        told so, with its length.
+    ranges : tuple of (str, float, float)
+        One ``(name, low, high)`` per entry, for entries the statement keeps in a range (angles
+        in radians): a wrong answer with an entry outside its range is told which entry and
+        which range.
+
+    Examples
+    --------
+    >>> Value(shape=(3,), angle=True, ranges=(("β", -3.14, 0.0),) * 3).unit
+    False
     """
 
     shape: tuple = ()
     rotation: bool = False
     angle: bool = False
+    unit: bool = False
+    ranges: tuple = ()
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,8 @@ rotation about z by 90° versus a reflection            :func:`axes_row`, :func:
 frames A, B, C of the :math:`R_{ab}, R_{ac}` example   :func:`draw_frame` with ``R=``
 :math:`v` in frames A and B, eq. (64)                  :func:`draw_frame`, :func:`draw_vector`
 :math:`a \times b` normal to the plane of a and b      :func:`draw_plane`, :func:`draw_vector`
-a particle orbiting the origin about :math:`\omega`    :func:`draw_arc`, :func:`draw_vector`
+a particle orbiting the origin about :math:`\omega`    :func:`plot_orbit`
+a body spinning about :math:`\omega`, eq. (121)        :func:`plot_spinning_body`
 the pendulum, :math:`\|v\| = |r\omega|`, eq. (118)     :func:`axes2d`, :func:`draw_pendulum`
 unit angular velocity: angle = time, eq. (125)         :func:`draw_arc`, :func:`draw_point`
 convergence of the series (124)/(126)                  :func:`plot_convergence`
@@ -55,7 +56,8 @@ module                          what it holds
 :mod:`.primitives`              :class:`Arrow`, :class:`Drawn`, frames, vectors, points,
                                 segments, curves
 :mod:`.shapes`                  a patch of a plane, the arc of a rotation, a rigid box
-:mod:`.figures_exponential`     chapter 03: the pendulum, Rodrigues' circle
+:mod:`.figures_exponential`     chapter 03: the pendulum, an orbit, a spinning body, Rodrigues'
+                                circle
 :mod:`.figures_accuracy`        error plots: the series' convergence, errors near a limit
 :mod:`.figures_composition`     chapter 04: frames side by side, the geodesic
 :mod:`.figures_orientation`     chapter 05: Euler turns, gimbal lock, the double cover, slerp
@@ -72,7 +74,12 @@ from .axes import _require_3d as _require_3d  # course_lib.interactive checks it
 from .display import figure_output, show
 from .figures_accuracy import plot_convergence, plot_error_curves
 from .figures_composition import frame_panels, plot_geodesic
-from .figures_exponential import draw_pendulum, plot_rodrigues_circle
+from .figures_exponential import (
+    draw_pendulum,
+    plot_orbit,
+    plot_rodrigues_circle,
+    plot_spinning_body,
+)
 from .figures_orientation import (
     angle_streams,
     double_cover,
@@ -121,7 +128,9 @@ __all__ = [
     "double_cover",
     "slerp_speed",
     "angle_streams",
+    "plot_orbit",
     "plot_rodrigues_circle",
+    "plot_spinning_body",
     "show",
     "figure_output",
 ]

@@ -1,8 +1,10 @@
-r"""Figures of chapter 03 (exponential coordinates): the pendulum and Rodrigues' circle.
+r"""Figures of chapter 03 (exponential coordinates): the pendulum, a particle's orbit, a
+spinning body and Rodrigues' circle.
 
 :func:`draw_pendulum` draws the planar pendulum of the notes' angular velocity, eq. (117)-(118);
-:func:`plot_rodrigues_circle` the geometry of Rodrigues' formula (a point turning on a circle
-about the axis).
+:func:`plot_orbit` a particle orbiting an axis, eq. (119); :func:`plot_spinning_body` a body
+spinning about an axis in a fixed frame, eq. (121); :func:`plot_rodrigues_circle` the geometry
+of Rodrigues' formula (a point turning on a circle about the axis).
 """
 
 from __future__ import annotations
@@ -22,13 +24,14 @@ from .primitives import (
     _screen_basis,
     _text,
     _unit,
+    draw_frame,
     draw_point,
     draw_segment,
     draw_vector,
 )
-from .shapes import draw_arc
+from .shapes import draw_arc, draw_box
 
-__all__ = ["draw_pendulum", "plot_rodrigues_circle"]
+__all__ = ["draw_pendulum", "plot_orbit", "plot_rodrigues_circle", "plot_spinning_body"]
 
 
 def draw_pendulum(ax, theta, r=1.0, omega=1.0, pivot=None, velocity_scale=1.0):
@@ -207,3 +210,136 @@ def plot_rodrigues_circle(
         handlelength=2.5,
     )
     return fig, ax, {"q_par": q_par, "q_perp": q_perp, "w_x_q": w_x_q, "Rq": Rq}
+
+
+def plot_orbit(omega, height=0.6, rho=0.9, phase=-0.6, lim=1.2, elev=35.0, azim=-60.0):
+    r"""A particle :math:`p` orbiting the origin about the axis :math:`\omega`, eq. (119).
+
+    The point sits at ``height`` along the axis and at the distance ``rho`` from it, ``phase``
+    radians round the axis from the screen's right. The figure draws the axis (grey line, blue
+    arrow :math:`\omega`), the position vector :math:`r` of :math:`p`, the dotted circle that
+    :math:`p` travels on, its radius :math:`\rho` (purple) and the velocity
+    :math:`v = \omega\times r` (green), tangent to the circle.
+
+    Parameters
+    ----------
+    omega : array_like, shape (3,)
+        The angular velocity (nonzero); its length is the rate of turning.
+    height, rho : float
+        The point's coordinate along the axis, and its distance from the axis (> 0).
+    phase : float
+        Where the point sits round the axis, in radians from the screen's right.
+    lim, elev, azim : float
+        Limits and viewing angles (see :func:`axes3d`).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+    parts : dict
+        ``"p"`` and ``"centre"`` (the centre of the circle, on the axis), ``"v"``
+        (:math:`\omega\times p`), arrays of shape (3,); ``"rho"``, the radius as drawn.
+
+    Raises
+    ------
+    ValueError
+        If ``omega`` is zero, ``rho <= 0`` or an input is not finite or has the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax, parts = plot_orbit([0, 0, 2.0], height=0.5, rho=0.8)
+    >>> round(float(np.linalg.norm(parts["v"])), 12), round(parts["rho"], 12)  # ‖v‖ = ‖ω‖ρ
+    (1.6, 0.8)
+    >>> plt.close(fig)
+    """
+    w_vec = as_vector(omega, "omega", 3)
+    w_dir = _unit(w_vec)
+    height, phase = as_scalar(height, "height"), as_scalar(phase, "phase")
+    rho = as_positive(rho, "rho")
+    right = np.array([-np.sin(np.radians(azim)), np.cos(np.radians(azim)), 0.0])
+    e1 = _unit(right - (right @ w_dir) * w_dir)  # across the axis, towards the screen's right
+    e2 = np.cross(w_dir, e1)
+    p0 = height * w_dir + rho * (np.cos(phase) * e1 + np.sin(phase) * e2)
+    centre = (p0 @ w_dir) * w_dir
+    fig, ax = axes3d(
+        r"A particle $p$ orbiting the origin: $v = \omega \times r$ (119)",
+        lim=lim,
+        elev=elev,
+        azim=azim,
+    )
+    orbit = draw_arc(ax, w_vec, p0, 2 * np.pi, style="dotted", arrow=False)
+    draw_segment(ax, -1.1 * w_dir, 1.3 * w_dir, color="0.5")
+    draw_vector(ax, w_vec, label=r"$\omega$", color="tab:blue")
+    draw_vector(ax, p0)
+    draw_point(ax, p0, label="$p$")
+    ax.text(*(0.5 * p0 + [0.1, 0.0, -0.2]), "$r$", fontsize=13)
+    draw_segment(ax, centre, p0, style="solid", color="tab:purple", linewidth=2.5)
+    ax.text(*(0.5 * (centre + p0) + [0.0, 0.0, 0.1]), r"$\rho$", color="tab:purple", fontsize=15)
+    v = np.cross(w_vec, p0)
+    draw_vector(ax, v, origin=p0, label="$v$", color="tab:green")
+    return fig, ax, {"p": p0, "centre": centre, "v": v, "rho": float(orbit.radius)}
+
+
+def plot_spinning_body(R, lim=1.2, elev=25.0, azim=-60.0):
+    r"""A body :math:`B` (a plate) spinning about a unit :math:`\omega` in the fixed frame
+    :math:`A`, eq. (121).
+
+    The plate has the orientation ``R``; its normal :math:`\omega = Re_3` is the axis, and its
+    centre sits on the axis at distance 1 from the origin. The figure draws the frame
+    :math:`A` (dotted), the axis :math:`\omega` (blue), the plate (orange) with a marked corner
+    :math:`q`, the dotted circle that :math:`q` travels on and the velocity
+    :math:`\dot q = \omega\times q` (green), tangent to it.
+
+    Parameters
+    ----------
+    R : array_like, shape (3, 3)
+        The plate's orientation (a rotation matrix).
+    lim, elev, azim : float
+        Limits and viewing angles (see :func:`axes3d`).
+
+    Returns
+    -------
+    fig : matplotlib.figure.Figure
+    ax : mpl_toolkits.mplot3d.axes3d.Axes3D
+    parts : dict of str -> ndarray, shape (3,)
+        ``"omega"`` (the unit axis), ``"q"`` (the marked corner) and ``"q_dot"``
+        (:math:`\omega\times q`).
+
+    Raises
+    ------
+    ValueError
+        If ``R`` is not a rotation matrix.
+
+    Examples
+    --------
+    >>> import numpy as np, matplotlib.pyplot as plt
+    >>> fig, ax, parts = plot_spinning_body(np.eye(3))
+    >>> parts["omega"], parts["q"], parts["q_dot"]
+    (array([0., 0., 1.]), array([-0.55, -0.55,  1.  ]), array([ 0.55, -0.55,  0.  ]))
+    >>> plt.close(fig)
+    """
+    R = np.asarray(R, dtype=float)
+    if R.shape != (3, 3) or not so3.is_rotation(R):
+        raise ValueError("R must be a 3x3 rotation matrix (RᵀR = I, det R = 1)")
+    w_B = R[:, 2]
+    fig, ax = axes3d(
+        r"Body $B$ spinning about $\omega$ in the fixed frame $A$ (121)",
+        lim=lim,
+        elev=elev,
+        azim=azim,
+    )
+    frame_A = draw_frame(ax, label="A", scale=0.55, style="dotted")
+    for frame_label in frame_A.artists[1::2] + frame_A.artists[-1:]:  # x_A, y_A, z_A and A
+        frame_label.set_fontsize(13)
+    draw_vector(ax, 1.4 * w_B, label=r"$\omega$", color="tab:blue")
+    plate = draw_box(
+        ax, R, center=w_B, size=(1.1, 1.1, 0.05), marks=[-0.55, -0.55, 0.0], color="tab:orange"
+    )
+    q_B = plate.points[0]
+    ax.text(*(q_B + [-0.05, -0.1, 0.08]), "$q$", fontsize=13, ha="right", va="center")
+    draw_arc(ax, w_B, q_B - w_B, 2 * np.pi, center=w_B, style="dotted", color="0.3", arrow=False)
+    ax.text(*(w_B + [-0.75, -0.2, 0.05]), "$B$", fontsize=13)
+    q_dot = np.cross(w_B, q_B)
+    draw_vector(ax, q_dot, origin=q_B, label=r"$\dot q = \omega \times q$", color="tab:green")
+    return fig, ax, {"omega": w_B, "q": q_B, "q_dot": q_dot}

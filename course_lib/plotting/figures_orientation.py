@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.lines import Line2D
 
 from .. import euler, quaternion, so3
 from .._arrays import as_finite_array, as_labels, as_str, as_unit_quaternions
@@ -21,15 +22,18 @@ __all__ = ["euler_steps", "gimbal_axes", "double_cover", "slerp_speed", "angle_s
 
 _TURN = {"X": so3.rot_x, "Y": so3.rot_y, "Z": so3.rot_z}
 _WORD = {0: "", 1: "the new ", 2: "the newest "}
+_BEFORE = "0.35"  # the frame before a turn: dark grey (contrast 7.5:1 on white)
 
 
 def euler_steps(angles, seq="ZYX", elev=25.0, azim=-30.0):
     r"""Three panels: the turns of an intrinsic sequence, each about the body's current axis.
 
-    Panel :math:`k` shows the frame :math:`R_{k-1}` (short, dashed, unlabelled) and
-    :math:`R_k = R_{k-1}R_{s_k}(\alpha_k)` (solid, axes labelled with subscript :math:`k`),
-    where :math:`s_k` is the k-th letter of ``seq``: turns about body axes multiply on the
-    right.
+    Panel :math:`k` shows the frame :math:`R_{k-1}` before the turn (grey, dashed, thick, three
+    quarters long, unlabelled) and :math:`R_k = R_{k-1}R_{s_k}(\alpha_k)` after it (coloured,
+    solid, axes labelled with subscript :math:`k`), where :math:`s_k` is the k-th letter of
+    ``seq``: turns about body axes multiply on the right. The two frames differ in line style,
+    length and colour, and a legend under the panels names them, so colour is never the only
+    cue.
 
     Parameters
     ----------
@@ -64,17 +68,30 @@ def euler_steps(angles, seq="ZYX", elev=25.0, azim=-30.0):
             {
                 "title": title,
                 "frames": [
-                    {"R": frames[k], "label": str(k), "style": "dashed", "scale": 0.6},
+                    {
+                        "R": frames[k],
+                        "label": str(k),
+                        "style": "dashed",
+                        "scale": 0.75,
+                        "colors": (_BEFORE,) * 3,
+                    },
                     {"R": frames[k + 1], "label": str(k + 1), "name": False},
                 ],
             }
         )
     fig, _, drawn = frame_panels(panels, lim=1.2, elev=elev, azim=azim)
-    for before, _after in drawn:  # the frame before the turn: arrows only, no names
-        for text in before.artists[1:]:
-            if not hasattr(text, "get_text"):
-                continue
-            text.remove()
+    for before, _after in drawn:  # the frame before the turn: thick arrows only, no names
+        for artist in before.artists:
+            if hasattr(artist, "get_text"):
+                artist.remove()
+            elif hasattr(artist, "set_linewidth"):
+                artist.set_linewidth(2.6)
+    handles = [
+        Line2D([], [], color=_BEFORE, linestyle="--", linewidth=2.6),
+        Line2D([], [], color="#0072B2", linestyle="-", linewidth=2.0),
+    ]
+    labels = ["before the turn: grey, dashed, short", "after the turn: coloured, solid, labelled"]
+    fig.legend(handles, labels, loc="lower center", ncol=2, frameon=False, handlelength=3.0)
     return fig
 
 

@@ -51,11 +51,18 @@ LAB_CONTENT = ".jp-OutputArea-output, .jp-RenderedMarkdown"
 LAB_NOT_CONTENT = ".jp-collapseHeadingButton, .cm-editor"
 REFLOW_JS = """() => {
   const doc = document.documentElement;
+  const inBox = el => {  // inside a box that scrolls or clips sideways: not the page's width
+    for (let q = el.parentElement; q && q !== document.body; q = q.parentElement) {
+      if (['auto', 'scroll', 'hidden', 'clip'].includes(getComputedStyle(q).overflowX)) {
+        return true;
+      }
+    }
+    return false;
+  };
   const wide = [...document.querySelectorAll('body *')].filter(el => {
     const r = el.getBoundingClientRect();
-    return r.width > 0 && r.right > doc.clientWidth + 1 && !el.closest('[hidden]');
-  }).filter(el => !el.parentElement || el.parentElement.getBoundingClientRect().right
-                                       <= doc.clientWidth + 1);
+    return r.width > 0 && r.right > doc.clientWidth + 1 && !inBox(el);
+  });
   return {scroll: doc.scrollWidth, width: doc.clientWidth,
           wide: wide.slice(0, 3).map(el => el.outerHTML.slice(0, 120))};
 }"""
@@ -166,6 +173,7 @@ def check_site(browser, site, names):
             finally:
                 page.close()
             rows.append(row(f"{site.name}/{name}", result, structure))
+            log(f"  {site.name}/{name}: {engines.timing(result)}")
             failures += details(f"{site.name}/{name}", result, structure)
             results.append(result)
     finally:
@@ -216,6 +224,7 @@ def check_lab(pw, paths, names, timeout=240):
                 failures.append(f"{nb}: could not be checked: {exc}")
                 continue
             rows.append(row(nb, result))
+            log(f"  {nb}: {engines.timing(result)}")
             failures += details(nb, result, [])
             results.append(result)
     finally:

@@ -18,6 +18,7 @@ import filecmp
 import json
 import shutil
 import subprocess
+import time
 
 from a11y_rules import WCAG_TAGS
 from common import HERE, ROOT, js
@@ -77,5 +78,15 @@ def run(page, name, content, not_content=None):
 
 
 def run_all(page, content, not_content=None, names=tuple(ENGINES)):
-    """name -> result, for every engine of ``names``."""
-    return {n: run(page, n, content, not_content) for n in names}
+    """name -> result, for every engine of ``names``; each result has its ``seconds``."""
+    out = {}
+    for n in names:
+        start = time.monotonic()
+        out[n] = run(page, n, content, not_content)
+        out[n]["seconds"] = time.monotonic() - start
+    return out
+
+
+def timing(results):
+    """ "axe 1.2 s, ibm 3.4 s, ..." for the log."""
+    return ", ".join(f"{n} {r['seconds']:.1f} s" for n, r in results.items())

@@ -804,3 +804,14 @@ def test_the_page_script_lets_tab_and_escape_leave_the_3d_view():
     assert "addEventListener('keydown', keys, true)" in js
     assert "event.key === 'Tab'" in js and "event.key === 'Escape'" in js
     assert "preventDefault" not in js  # Tab keeps its default: the next focusable element
+
+
+def test_regression_the_players_repetition_mode_is_a_radio_group_not_a_form():
+    """HTML_CodeSniffer (WCAG 3.2.2, H32.2): matplotlib's player put Once/Loop/Reflect in a
+    <form> without a submit button; a radio group with its own radio names, read by id."""
+    html = spin_animation(frames=3).data
+    assert "<form" not in html and html.count('role="radiogroup"') == 1
+    group = re.search(r'<div role="radiogroup" aria-label="Repetition mode" id="(\w+)"', html)
+    assert html.count(f'name="{group.group(1)}_state"') == 3  # not "state": page-wide by name
+    assert "document[this.loop_select_id]" not in html
+    assert "getElementById(this.loop_select_id).querySelectorAll('input[type=radio]')" in html

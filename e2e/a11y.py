@@ -172,12 +172,10 @@ def _engines_for(page, names, ibm_max_nodes):
 
     IBM's engine takes about 2.5 ms an element (a chapter typeset by MathJax has 20 000 to
     60 000: 50-140 s a page on a shared machine); CI runs it on the smaller pages only."""
-    if ibm_max_nodes is None or "ibm" not in names:
-        return names, None
     nodes = page.evaluate("document.getElementsByTagName('*').length")
-    if nodes <= ibm_max_nodes:
-        return names, None
-    return [n for n in names if n != "ibm"], f"ibm skipped: {nodes} elements"
+    if ibm_max_nodes is None or "ibm" not in names or nodes <= ibm_max_nodes:
+        return names, f"{nodes} elements"
+    return [n for n in names if n != "ibm"], f"{nodes} elements: ibm skipped"
 
 
 def check_site(browser, site, names, ibm_max_nodes=None):

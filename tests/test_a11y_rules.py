@@ -224,3 +224,25 @@ def test_alt_text_tool_gives_a_stale_show_call_its_caption_and_keeps_the_rest():
         'label = "θ = 30°"\nplot.show(\n    "Figure: a turn by θ = 30° about z."\n)\nprint(label)'
     )
     assert rewrite(nb) == []
+
+
+def test_regression_the_sites_explorer_still_says_the_state_not_the_sliders():
+    """The site's alt text of an explorer's still was the text around the cell ("Move the
+    sliders to choose an axis..."); it is what the explorer shows in that state."""
+    sys.path.insert(0, str(ROOT / "site"))
+    import build
+    from course_lib.interactive import rotation_explorer
+
+    explorer = rotation_explorer()
+    output = nbformat.v4.new_output("display_data", data=explorer._repr_mimebundle_())
+    cells = [
+        nbformat.v4.new_markdown_cell("Move the sliders to choose an axis and an angle."),
+        nbformat.v4.new_code_cell("rotation_explorer()", outputs=[output]),
+    ]
+    nb = build.finish(nbformat.v4.new_notebook(cells=cells))
+    outputs = nb.cells[1].outputs
+    assert "image/png" in outputs[0]["data"] and "text/html" not in outputs[0]["data"]
+    assert outputs[1]["data"]["text/markdown"] == build.STILL_NOTE
+    alt = nb.cells[1].metadata["mystnb"]["image"]["alt"]
+    assert alt == explorer.alt_text() and "θ = 2.09 rad (120°)" in alt
+    assert alt_text_problem(alt) is None

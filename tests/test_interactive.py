@@ -776,7 +776,7 @@ def test_the_3d_view_turns_with_the_arrow_keys_and_zooms_with_plus_and_minus(mak
     _key(widget, "-")
     _key(widget, "-")
     assert widget._zoom < zoom
-    for _ in range(30):  # the zoom stays in its range, the elevation at the poles
+    for _ in range(8):  # the zoom stays in its range (0.9 / 1.15**8 < 0.5), the elevation at 90
         _key(widget, "-")
         _key(widget, "up")
     assert widget._zoom >= 0.5 and widget.ax.elev == 90

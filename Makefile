@@ -193,5 +193,5 @@ a11y: $(SITE_STAMP)
 	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
 	$(BIN)/python e2e/a11y_keyboard.py
 	$(BIN)/python e2e/a11y_math_lab.py
-	$(BIN)/python -m tools.figure_audit
 	$(BIN)/python e2e/a11y.py
+	$(BIN)/python -m tools.figure_audit

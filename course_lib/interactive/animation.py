@@ -185,8 +185,15 @@ _LOOP_READ_NEW = (
 )
 
 
+_RADIO = re.compile(
+    r'(<input type="radio"[^>]*id="([^"]+)"[^>]*>)\s*<label for="\2">([^<]*)</label>'
+)
+
+
 def _radio_group(m):
     radios = m.group(2).replace('name="state"', f'name="{m.group(1)}_state"')
+    # each radio inside its label too: IBM's engine in JupyterLab found no label by for= alone
+    radios = _RADIO.sub(r'<label for="\2">\1 \3</label>', radios)
     return (
         f'<div role="radiogroup" aria-label="Repetition mode" id="{m.group(1)}" '
         f'class="anim-state">{radios}</div>'

@@ -818,4 +818,3 @@ def test_regression_the_players_repetition_mode_is_a_radio_group_not_a_form():
     # each radio inside its label (IBM's engine in JupyterLab: no label found by for= alone)
     wrapped = r'<label for="[^"]+"><input type="radio"[^>]*> \w+</label>'
     assert len(re.findall(wrapped, html)) == 3
-    )

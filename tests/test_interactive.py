@@ -816,5 +816,6 @@ def test_regression_the_players_repetition_mode_is_a_radio_group_not_a_form():
     assert "document[this.loop_select_id]" not in html
     assert "getElementById(this.loop_select_id).querySelectorAll('input[type=radio]')" in html
     # each radio inside its label (IBM's engine in JupyterLab: no label found by for= alone)
-    wrapped = r'<label for="[^"]+"><input type="radio"[^>]*> \w+</label>'
-    assert len(re.findall(wrapped, html)) == 3
+    wrapped = r'<label for="[^"]+"><input type="radio"[^>]* aria-label="(\w+)"> (\w+)</label>'
+    names = re.findall(wrapped, html)
+    assert names == [("Once", "Once"), ("Loop", "Loop"), ("Reflect", "Reflect")]

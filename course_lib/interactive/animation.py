@@ -192,8 +192,15 @@ _RADIO = re.compile(
 
 def _radio_group(m):
     radios = m.group(2).replace('name="state"', f'name="{m.group(1)}_state"')
-    # each radio inside its label too: IBM's engine in JupyterLab found no label by for= alone
-    radios = _RADIO.sub(r'<label for="\2">\1 \3</label>', radios)
+    # each radio inside its label and named by aria-label too: IBM's engine in JupyterLab
+    # associated neither the label's for= nor the wrapping label with the radio
+    radios = _RADIO.sub(
+        lambda r: (
+            f'<label for="{r.group(2)}">{r.group(1)[:-1].rstrip()} '
+            f'aria-label="{r.group(3).strip()}"> {r.group(3)}</label>'
+        ),
+        radios,
+    )
     return (
         f'<div role="radiogroup" aria-label="Repetition mode" id="{m.group(1)}" '
         f'class="anim-state">{radios}</div>'

@@ -196,15 +196,19 @@ test-slow: $(STAMP)
 		tests/test_grading_privdrop.py
 
 # Accessibility (WCAG 2.1 AA, docs/accessibility.md): builds both editions of the site, then runs
-# axe-core (pinned, from npm into build/a11y-deps/) in headless Chromium on every page and on every
-# chapter and problem set opened in JupyterLab; fails on any violation in the course's content.
+# three engines (axe-core, IBM Equal Access, HTML_CodeSniffer: pinned in e2e/engines/, from npm
+# into build/a11y-deps/) in headless Chromium on every page (at 1200 and 320 CSS px) and on every
+# chapter and problem set opened in JupyterLab; the keyboard (sliders, the 3D view), the maths in
+# JupyterLab, and every figure's colours (tools/figure_audit.py). Fails on any problem in the
+# course's content.
 .PHONY: a11y
 a11y: $(SITE_STAMP)
 	@test -x /usr/bin/chromium || { echo "make a11y needs Chromium: sudo apt-get install chromium"; exit 2; }
-	@command -v npm >/dev/null || { echo "make a11y needs npm (axe-core, MathJax): sudo apt-get install npm"; exit 2; }
+	@command -v npm >/dev/null || { echo "make a11y needs npm (axe-core, IBM's accessibility-checker-engine, HTML_CodeSniffer, MathJax): sudo apt-get install npm"; exit 2; }
 	$(BIN)/python site/build.py
 	$(BIN)/python site/build.py --solutions
 	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
 	$(BIN)/python e2e/a11y_keyboard.py
 	$(BIN)/python e2e/a11y_math_lab.py
 	$(BIN)/python e2e/a11y.py
+	$(BIN)/python -m tools.figure_audit

@@ -112,8 +112,9 @@ class RigidCheck(Verdict):
         c = self.counterexample
         if c is None:
             return ""
+        # a header row that names its columns: IBM's engine fails a table whose headers are empty
         return (
-            f"| | |\n|---|---|\n"
+            f"| counterexample | value |\n|---|---|\n"
             f"| $p_1$ | `{fmt_vector(c.p1)}` |\n| $p_2$ | `{fmt_vector(c.p2)}` |\n"
             f"| left side | `{fmt_vector(c.lhs)}` |\n| right side | `{fmt_vector(c.rhs)}` |\n"
             f"| mismatch | {c.mismatch:.1e} |"

@@ -1,48 +1,83 @@
-"""Accessibility (WCAG 2.1 AA) of the course: axe-core in headless Chromium (``make a11y``).
+"""Accessibility (WCAG 2.1 AA) of the course: three engines in headless Chromium (``make a11y``).
 
     python e2e/a11y.py [--site DIR ...] [--lab PATH ...] [--no-lab] [--no-site]
+                       [--engines axe,ibm,htmlcs]
 
-1. axe-core, pinned (:data:`AXE`), is installed from npm into ``build/a11y-deps/`` on first use
-   and injected into every page from that local file: nothing is fetched at run time.
+1. The engines (:mod:`a11y_engines`: axe-core, IBM's accessibility-checker-engine, pa11y's
+   HTML_CodeSniffer), pinned in ``e2e/engines/package-lock.json``, are installed from npm into
+   ``build/a11y-deps/`` on first use and injected into every page from those local files:
+   nothing is fetched at run time.
 2. Every page of each built site (default: ``build/site`` and ``build/site-instructor``, the
    student and instructor editions, served from a loopback server) is loaded, typeset by its
-   own MathJax, and checked with axe's ``wcag2a, wcag2aa, wcag21a, wcag21aa`` rules; the page
-   body (``div.body``) is the course's content, the rest (sidebar, footer) the theme's chrome.
+   own MathJax, and checked by each engine; every node counts, the theme's sidebar and footer
+   included. Then the page is made 320 CSS px wide (1280 px at 400 % zoom) and must not scroll
+   sideways (WCAG 1.4.10).
 3. Every chapter and problem set is opened in JupyterLab (e2e's :class:`run_e2e.Lab`: its own
    server, copy and profile), run, scrolled through so that every cell is rendered, and checked
    the same way; the notebook's outputs (figures, widgets, text) and rendered markdown are the
    course's content, the rest (the cell editors, the fold buttons, menus) JupyterLab's own
    chrome, reported apart.
-4. Besides axe: the page language, one h1, headings without a skipped level and meaningful link
-   text (:mod:`a11y_rules`), on the site's pages.
+4. Besides the engines: the page language, one h1, headings without a skipped level and
+   meaningful link text (:mod:`a11y_rules`), on the site's pages.
 
-Prints a table per page (violations and incomplete checks, content / chrome) and exits 1 on any
-violation in the course's content (or a structure problem); 0 otherwise. Without Chromium or
-npm it says which is missing and how to install it, and exits 2.
+Prints a table per page (each engine's failures, content / chrome) and exits 1 on any failure in
+the course's content (or a structure or reflow problem); 0 otherwise. Without Chromium or npm it
+says which is missing and how to install it, and exits 2.
 """
 
 import argparse
 import functools
 import http.server
 import shutil
-import subprocess
 import sys
 import threading
 from pathlib import Path
 
-from a11y_rules import WCAG_TAGS, structure_problems
+import a11y_engines as engines
+from a11y_rules import structure_problems
 from common import ROOT, CheckFailed, KernelStalled, js, log
 
-AXE = "axe-core@4.10.3"
-DEPS = ROOT / "build" / "a11y-deps"
-AXE_JS = DEPS / "node_modules" / "axe-core" / "axe.min.js"
 CHROMIUM = Path("/usr/bin/chromium")
 SITES = [ROOT / "build" / "site", ROOT / "build" / "site-instructor"]
-SITE_CONTENT = "div.body"
+# On the site every node counts, the theme's sidebar and footer included; the structure rules
+# (one h1, headings in order, link text) read the page body.
+SITE_CONTENT = "html"
+SITE_BODY = "div.body"
+#: WCAG 1.4.10: 320 CSS px wide (1280 px at 400 % zoom) without scrolling the page sideways.
+REFLOW = {"width": 320, "height": 256}
 # The notebook's own content in JupyterLab: its outputs (figures, widgets, text) and its rendered
 # markdown. The cell editor (CodeMirror's textbox) and the heading fold button are JupyterLab's.
 LAB_CONTENT = ".jp-OutputArea-output, .jp-RenderedMarkdown"
 LAB_NOT_CONTENT = ".jp-collapseHeadingButton, .cm-editor"
+REFLOW_JS = """() => {
+  const doc = document.documentElement;
+  const inBox = el => {  // inside a box that scrolls or clips sideways: not the page's width
+    for (let q = el.parentElement; q && q !== document.body; q = q.parentElement) {
+      if (['auto', 'scroll', 'hidden', 'clip'].includes(getComputedStyle(q).overflowX)) {
+        return true;
+      }
+    }
+    return false;
+  };
+  const wide = [...document.querySelectorAll('body *')].filter(el => {
+    const r = el.getBoundingClientRect();
+    return r.width > 0 && r.right > doc.clientWidth + 1 && !inBox(el);
+  });
+  return {scroll: doc.scrollWidth, width: doc.clientWidth,
+          wide: wide.slice(0, 3).map(el => el.outerHTML.slice(0, 120))};
+}"""
+
+
+# WCAG 2.4.3: a formula is no tab stop unless it scrolls (MathJax's menu puts each in the tab
+# order; site/conf.py turns it off, course.js gives a tab stop to a formula that scrolls).
+MATH_STOPS_JS = """(content) => [...document.querySelectorAll('mjx-container[tabindex]')]
+  .filter(m => m.tabIndex >= 0 && m.closest(content) && m.scrollWidth <= m.clientWidth + 1)
+  .length"""
+
+
+def math_stop_problems(page, content):
+    n = page.evaluate(MATH_STOPS_JS, content)
+    return [f"{n} formula(s) that do not scroll are tab stops"] if n else []
 
 
 def missing_tools(need_npm):
@@ -51,69 +86,74 @@ def missing_tools(need_npm):
     if not CHROMIUM.exists():
         out.append(f"{CHROMIUM} is missing: install it with `sudo apt-get install chromium`")
     if need_npm and shutil.which("npm") is None:
-        out.append("npm is missing (it installs axe-core): `sudo apt-get install npm`")
+        out.append(
+            "npm is missing (it installs the engines axe-core, IBM's accessibility-checker-engine"
+            " and HTML_CodeSniffer): `sudo apt-get install npm`"
+        )
     return out
-
-
-def install_axe():
-    if not AXE_JS.is_file():
-        cmd = ["npm", "install", "--no-save", "--no-audit", "--no-fund", "--prefix", str(DEPS)]
-        subprocess.run([*cmd, AXE], check=True)
-    return AXE_JS
-
-
-def run_axe(page, content, not_content=None):
-    """axe's WCAG A/AA results on ``page``, its nodes sorted into content / chrome."""
-    if not page.evaluate("typeof window.axe !== 'undefined'"):
-        page.add_script_tag(path=str(AXE_JS))
-    return page.evaluate(js("axe_run"), [content, WCAG_TAGS, not_content])
 
 
 def count(rules, where):
     return sum(1 for r in rules for n in r["nodes"] if n["where"] == where)
 
 
-def row(name, result, extra=()):
-    v, i = result["violations"], result["incomplete"]
-    return [
-        name,
-        count(v, "content"),
-        count(v, "chrome"),
-        count(i, "content"),
-        count(i, "chrome"),
-        list(extra),
-    ]
+def row(name, results, extra=()):
+    """[name, {engine: (content, chrome) violations}, extra problems]."""
+    counts = {
+        e: (count(r["violations"], "content"), count(r["violations"], "chrome"))
+        for e, r in results.items()
+    }
+    return [name, counts, list(extra)]
 
 
-def print_table(title, rows):
+def print_table(title, rows, names):
     log(f"{title}")
-    log(f"  {'page':<46} {'violations':>10} {'(chrome)':>9} {'incomplete':>11} {'(chrome)':>9}")
-    for name, vc, vx, ic, ix, _ in rows:
-        log(f"  {name:<46} {vc:>10} {vx:>9} {ic:>11} {ix:>9}")
+    log(f"  {'page':<46} " + " ".join(f"{n:>12}" for n in names) + "  (failures: content/chrome)")
+    for name, counts, extra in rows:
+        cells = " ".join(
+            f"{f'{counts[n][0]}/{counts[n][1]}' if n in counts else 'not run':>12}" for n in names
+        )
+        log(f"  {name:<46} {cells}" + (f"  +{len(extra)} other" if extra else ""))
 
 
-def details(name, result, structure):
-    """The lines that explain a page's failures: each rule, where, and the first nodes."""
+def details(name, results, structure):
+    """The lines that explain a page's failures: each engine and rule, where, the first nodes."""
     lines = [f"{name}: {p}" for p in structure]
-    for rule in result["violations"]:
-        nodes = [n for n in rule["nodes"] if n["where"] == "content"]
-        if nodes:
-            lines.append(
-                f"{name}: {rule['id']} ({rule['impact']}): {rule['help']}; "
-                f"{len(nodes)} node(s), e.g. {nodes[0]['html']!r} {nodes[0]['why']!r}"
-            )
+    for engine, result in results.items():
+        for rule in result["violations"]:
+            nodes = [n for n in rule["nodes"] if n["where"] == "content"]
+            if nodes:
+                lines.append(
+                    f"{name}: [{engine}] {rule['id']} ({rule['impact']}): {rule['help'][:160]}; "
+                    f"{len(nodes)} node(s), e.g. {nodes[0]['html']!r} {nodes[0]['why'][:160]!r}"
+                )
     return lines
 
 
 def chrome_summary(results):
-    """Rule id -> nodes, of the violations outside the course's content (reported only)."""
+    """engine:rule id -> nodes, of the violations outside the course's content (reported)."""
     out = {}
-    for result in results:
-        for rule in result["violations"]:
-            n = count([rule], "chrome")
-            if n:
-                out[rule["id"]] = out.get(rule["id"], 0) + n
+    for by_engine in results:
+        for engine, result in by_engine.items():
+            for rule in result["violations"]:
+                n = count([rule], "chrome")
+                if n:
+                    key = f"{engine}:{rule['id']}"
+                    out[key] = out.get(key, 0) + n
     return out
+
+
+def reflow_problems(page):
+    """WCAG 1.4.10: the page at 320 CSS px scrolls sideways? (what sticks out, if so)"""
+    page.set_viewport_size(REFLOW)
+    page.wait_for_timeout(300)
+    info = page.evaluate(REFLOW_JS)
+    if info["scroll"] <= info["width"]:
+        return []
+    return [
+        f"at {REFLOW['width']} CSS px the page scrolls sideways ({info['scroll']} px wide): "
+        + "; ".join(info["wide"])
+    ]
 
 
 def _serve(directory):
@@ -127,7 +167,18 @@ def _serve(directory):
     return httpd
 
 
-def check_site(browser, site):
+def _engines_for(page, names, ibm_max_nodes):
+    """The engines to run on ``page``: IBM's only up to ``ibm_max_nodes`` elements, if given.
+
+    IBM's engine takes about 2.5 ms an element (a chapter typeset by MathJax has 20 000 to
+    60 000: 50-140 s a page on a shared machine); CI runs it on the smaller pages only."""
+    nodes = page.evaluate("document.getElementsByTagName('*').length")
+    if ibm_max_nodes is None or "ibm" not in names or nodes <= ibm_max_nodes:
+        return names, f"{nodes} elements"
+    return [n for n in names if n != "ibm"], f"{nodes} elements: ibm skipped"
+
+
+def check_site(browser, site, names, ibm_max_nodes=None):
     """(rows, failure lines, results) for every page of the site in ``site``."""
     pages = sorted(p.name for p in site.glob("*.html"))
     httpd = _serve(site)
@@ -140,11 +191,18 @@ def check_site(browser, site):
                 if page.query_selector("script[src*='mathjax']"):
                     page.wait_for_function("window.MathJax && MathJax.startup")
                     page.evaluate("MathJax.startup.promise")
-                result = run_axe(page, SITE_CONTENT)
-                structure = structure_problems(page.evaluate(js("page_structure"), SITE_CONTENT))
+                run, skipped = _engines_for(page, names, ibm_max_nodes)
+                result = engines.run_all(page, SITE_CONTENT, names=run)
+                structure = structure_problems(page.evaluate(js("page_structure"), SITE_BODY))
+                structure += math_stop_problems(page, SITE_BODY)
+                structure += reflow_problems(page)
             finally:
                 page.close()
             rows.append(row(f"{site.name}/{name}", result, structure))
+            log(
+                f"  {site.name}/{name}: {engines.timing(result)}"
+                + (f" ({skipped})" if skipped else "")
+            )
             failures += details(f"{site.name}/{name}", result, structure)
             results.append(result)
     finally:
@@ -153,8 +211,8 @@ def check_site(browser, site):
     return rows, failures, results
 
 
-def _axe_notebook(lab, nb, timeout):
-    """axe's result on notebook ``nb`` opened and run in ``lab``; CheckFailed if it cannot run."""
+def _check_notebook(lab, nb, timeout, names):
+    """The engines' results on notebook ``nb`` run in ``lab``; CheckFailed if it cannot run."""
     from notebook_checks import open_and_run
 
     page = lab.context.new_page()
@@ -162,7 +220,8 @@ def _axe_notebook(lab, nb, timeout):
         open_and_run(page, lab.server, nb, [], timeout)
         page.evaluate(js("sweep"))
         page.wait_for_timeout(500)
-        return run_axe(page, LAB_CONTENT, LAB_NOT_CONTENT)
+        result = engines.run_all(page, LAB_CONTENT, LAB_NOT_CONTENT, names)
+        return result, math_stop_problems(page, LAB_CONTENT)
     finally:
         try:
             page.evaluate(js("shutdown_kernel"))
@@ -171,7 +230,7 @@ def _axe_notebook(lab, nb, timeout):
         page.close()
 
 
-def check_lab(pw, paths, timeout=240):
+def check_lab(pw, paths, names, timeout=240):
     """(rows, failure lines, results) for every notebook of ``paths`` opened in JupyterLab.
 
     A stalled kernel (cells left queued while it says idle, :class:`common.KernelStalled`) is
@@ -185,17 +244,18 @@ def check_lab(pw, paths, timeout=240):
         for nb in lab.notebooks:
             try:
                 try:
-                    result = _axe_notebook(lab, nb, timeout)
+                    result, stops = _check_notebook(lab, nb, timeout, names)
                 except KernelStalled as exc:
                     log(f"  {nb}: kernel stalled ({exc}); retrying once on a new JupyterLab")
                     lab.close()
                     lab = Lab(pw, paths, fixtures=False)
-                    result = _axe_notebook(lab, nb, timeout)
+                    result, stops = _check_notebook(lab, nb, timeout, names)
             except CheckFailed as exc:
                 failures.append(f"{nb}: could not be checked: {exc}")
                 continue
-            rows.append(row(nb, result))
-            failures += details(nb, result, [])
+            rows.append(row(nb, result, stops))
+            log(f"  {nb}: {engines.timing(result)}")
+            failures += details(nb, result, stops)
             results.append(result)
     finally:
         lab.close()
@@ -208,13 +268,29 @@ def main(argv=None):
     parser.add_argument("--lab", action="append", type=Path, help="notebooks for JupyterLab")
     parser.add_argument("--no-site", action="store_true")
     parser.add_argument("--no-lab", action="store_true")
+    parser.add_argument(
+        "--ibm-max-nodes",
+        type=int,
+        help="on the site, run IBM's engine only on pages of at most this many elements",
+    )
+    parser.add_argument(
+        "--engines",
+        default=",".join(engines.ENGINES),
+        help=f"which engines, comma-separated (default: all: {', '.join(engines.ENGINES)})",
+    )
     args = parser.parse_args(argv)
-    problems = missing_tools(need_npm=not AXE_JS.is_file())
+    names = [n.strip() for n in args.engines.split(",") if n.strip()]
+    unknown = [n for n in names if n not in engines.ENGINES]
+    if unknown or not names:
+        parser.error(f"--engines: unknown {unknown}; expected some of {list(engines.ENGINES)}")
+    problems = missing_tools(need_npm=not engines.installed())
     if problems:
         for p in problems:
             log(p)
         return 2
-    install_axe()
+    engines.install()
+    pinned = engines.versions()
+    title = ", ".join(f"{n} {pinned[n]} ({engines.POLICY[n]})" for n in names)
     sites = [] if args.no_site else (args.site or SITES)
     for site in sites:
         if not (site / "index.html").is_file():
@@ -228,15 +304,17 @@ def main(argv=None):
         browser = pw.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
         try:
             for site in sites:
-                rows, fails, results = check_site(browser, site)
-                print_table(f"site {site.name} (axe-core {AXE.split('@')[1]}, {WCAG_TAGS})", rows)
+                rows, fails, results = check_site(browser, site, names, args.ibm_max_nodes)
+                print_table(f"site {site.name}: {title}", rows, names)
                 failures += fails
                 all_results += results
         finally:
             browser.close()
         if labs:
-            rows, fails, results = check_lab(pw, [p.resolve() for p in labs])
-            print_table("JupyterLab: the notebooks' content (cells) and JupyterLab's chrome", rows)
+            rows, fails, results = check_lab(pw, [p.resolve() for p in labs], names)
+            print_table(
+                "JupyterLab: the notebooks' content (cells) and JupyterLab's chrome", rows, names
+            )
             failures += fails
             all_results += results
     chrome = chrome_summary(all_results)
@@ -250,7 +328,7 @@ def main(argv=None):
     log(
         f"{len(failures)} problem(s) in the course's content"
         if failures
-        else "0 violations of WCAG 2.0/2.1 A and AA rules in the course's content"
+        else f"0 failures of WCAG 2.0/2.1 A and AA in the course's content ({title})"
     )
     return 1 if failures else 0
 

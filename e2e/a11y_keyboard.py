@@ -5,7 +5,11 @@
 The notebook is opened and run (e2e's :class:`run_e2e.Lab`); in its first explorer, from the
 first slider the Tab key moves through every slider (each with a label that names it, the same
 name on the focused handle itself, ``aria-label``, and a visible focus), the arrow keys change
-each one, and the figure is redrawn after each change (WCAG 2.1.1, 2.4.7, 4.1.2). The first
+each one, and the figure is redrawn after each change (WCAG 2.1.1, 2.4.7, 4.1.2). Then Tab
+reaches the 3D view (ipympl's canvas): it has a name saying its keys and a visible focus ring,
+ArrowLeft turns it and + zooms it (the figure is redrawn each time), and Tab, Shift+Tab and
+Escape take the focus out of it (WCAG 2.1.2, no keyboard trap: ipympl swallows every key). The
+first
 slider is focused from the page with ``focus()`` (as a screen reader's "next control" would land
 on it: Tab through a whole JupyterLab notebook passes hundreds of editor stops first); after
 that no mouse and no click. Exit status 0 when it holds.
@@ -85,6 +89,61 @@ def drive(page, problems, timeout=60):
                 break
 
 
+CANVAS = ".jupyter-matplotlib-canvas-div"
+VIEW_JS = """() => {
+  const el = document.activeElement;
+  const s = getComputedStyle(el);
+  return {onView: el.matches('.jupyter-matplotlib-canvas-div'), role: el.getAttribute('role'),
+          name: el.getAttribute('aria-label') || '',
+          outline: s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) >= 2,
+          outlineColor: s.outlineColor};
+}"""
+
+
+def _view_redrawn(page, before):
+    now = page.evaluate(js("widget_figure"), [0, 0])
+    return now if now["loaded"] and now["src"] != before["src"] else None
+
+
+def _leaves(page, key, problems):
+    """Focus the 3D view, press ``key``: the focus must leave it."""
+    page.locator(f'[data-e2e-widget="0"] {CANVAS}').first.focus()
+    page.keyboard.press(key)
+    page.wait_for_timeout(200)
+    if page.evaluate(VIEW_JS)["onView"]:
+        problems.append(f"{key} does not leave the 3D view (a keyboard trap, WCAG 2.1.2)")
+    else:
+        log(f"  3D view: {key} leaves it")
+
+
+def drive_view(page, problems, timeout=60):
+    """From the last slider: Tab to the 3D view, turn and zoom it, leave it."""
+    for _ in range(4):
+        page.keyboard.press("Tab")
+        page.wait_for_timeout(200)
+        if page.evaluate(VIEW_JS)["onView"]:
+            break
+    view = page.evaluate(VIEW_JS)
+    if not view["onView"]:
+        problems.append("Tab from the last slider does not reach the 3D view")
+        return
+    if view["role"] != "application" or "arrow keys" not in view["name"]:
+        problems.append(f"the 3D view's name does not say its keys: {view['name']!r}")
+    if not view["outline"]:
+        problems.append("the 3D view shows no focus ring")
+    for key, what in (("ArrowLeft", "turned"), ("+", "zoomed")):
+        before = page.evaluate(js("widget_figure"), [0, 0])
+        page.keyboard.press(key)
+        try:
+            poll(functools.partial(_view_redrawn, page, before), timeout, f"{key} to redraw")
+        except CheckFailed as exc:
+            problems.append(f"the 3D view: {exc}")
+            continue
+        log(f"  3D view: {key} {what} it (figure redrawn); name {view['name'][:70]!r}...")
+    for key in ("Tab", "Shift+Tab", "Escape"):
+        _leaves(page, key, problems)
+
+
 def main(argv=None):
     from notebook_checks import open_and_run
     from playwright.sync_api import sync_playwright
@@ -99,6 +158,8 @@ def main(argv=None):
             page = lab.context.new_page()
             open_and_run(page, lab.server, lab.notebooks[0], problems, 240)
             drive(page, problems)
+            if not problems:
+                drive_view(page, problems)
             page.evaluate(js("shutdown_kernel"))
         except CheckFailed as exc:
             problems.append(str(exc))
@@ -108,7 +169,7 @@ def main(argv=None):
         log(f"FAIL keyboard: {p}")
     log(
         "keyboard-only explorer: "
-        + ("FAILED" if problems else "every slider reached, changed, redrawn")
+        + ("FAILED" if problems else "every slider and the 3D view reached, operated, left")
     )
     return 1 if problems else 0
 

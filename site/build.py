@@ -148,21 +148,39 @@ def prepare(nb, name, url):
     return nb
 
 
+def _is_explorer(output):
+    return nbtool.WIDGET_VIEW in output.get("data", {}) or output.get("metadata", {}).get(
+        nbtool.EXPLORER_STILL
+    )
+
+
 def _still(output):
-    """An explorer's output without its widget view: the PNG stays, then the line saying why."""
+    """An explorer's output without its widget view: the PNG stays, then the line saying why.
+
+    Returns (outputs, alt): the still's alt text is what the explorer showed in that state
+    (``Explorer.alt_text``), not the text around the cell, which describes the sliders."""
     data = output["data"]
-    for key in (nbtool.WIDGET_VIEW, "text/html"):
-        data.pop(key, None)
+    data.pop(nbtool.WIDGET_VIEW, None)
+    found = figure_alt_and_png(_html(data))
+    data.pop("text/html", None)
     note = nbformat.v4.new_output("display_data", data={"text/markdown": STILL_NOTE})
-    return [output, note] if "image/png" in data else [note]
+    if found is None:
+        return ([output, note] if "image/png" in data else [note]), None
+    alt, data["image/png"] = found
+    data["text/plain"] = alt
+    return [output, note], alt
+
+
+def _html(data):
+    html = data.get("text/html")
+    return "".join(html) if isinstance(html, list) else html or ""
 
 
 def _figure_as_png(output):
     """A figure shown by ``plotting.show`` (an HTML <img> with its alt text) as an image/png
     output, as every other figure: Sphinx writes it to ``_images/`` with the same alt text."""
     data = output.get("data", {})
-    html = data.get("text/html")
-    found = figure_alt_and_png("".join(html) if isinstance(html, list) else html or "")
+    found = figure_alt_and_png(_html(data))
     if found is None:
         return output
     alt, png = found
@@ -173,18 +191,17 @@ def _figure_as_png(output):
 def finish(nb):
     """Explorers to their still pictures, alt text for every figure, clean."""
     for i, cell in enumerate(nb.cells):
-        outputs = []
-        for output in map(_figure_as_png, cell.get("outputs", [])):
-            if nbtool.WIDGET_VIEW in output.get("data", {}) or output.get("metadata", {}).get(
-                nbtool.EXPLORER_STILL
-            ):
-                outputs += _still(output)
+        outputs, alt = [], None
+        for output in cell.get("outputs", []):
+            if _is_explorer(output):
+                still, alt = _still(output)
+                outputs += still
             else:
-                outputs.append(output)
+                outputs.append(_figure_as_png(output))
         if "outputs" in cell:
             cell.outputs = outputs
         if any("image/png" in o.get("data", {}) for o in outputs):
-            cell.metadata["mystnb"] = {"image": {"alt": figure_alt(nb.cells, i)}}
+            cell.metadata["mystnb"] = {"image": {"alt": alt or figure_alt(nb.cells, i)}}
     return nbtool.clean(nb)
 
 

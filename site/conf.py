@@ -18,6 +18,10 @@ html_title = project
 html_theme_options = {"nosidebar": False, "show_powered_by": False}
 html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # mathjax/, course.css (site/build.py)
 mathjax_path = "mathjax/tex-chtml.js"  # relative to _static/
+# WCAG 2.4.3: a formula is not a tab stop (MathJax 3 puts every one in the tab order for its
+# expression explorer: 252-610 stops a chapter); screen readers still read its assistive MathML,
+# and a formula that scrolls sideways gets its own tab stop from course.js.
+mathjax3_config = {"options": {"menuOptions": {"settings": {"inTabOrder": False}}}}
 html_css_files = ["course.css"]  # no page wider than the window; contrast (WCAG 1.4.3)
 html_js_files = ["course.js"]  # a tab stop on every box that scrolls sideways (WCAG 2.1.1)
 # Pygments' own default style meets WCAG AA contrast (4.5:1) on a light background; the

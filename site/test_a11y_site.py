@@ -82,3 +82,29 @@ def test_animation_player_works_from_the_keyboard_with_visible_focus(visit):
         page.keyboard.press("Tab")
         names.append(page.evaluate("document.activeElement.getAttribute('aria-label')"))
     assert "Pause" in names and "Play" in names, names
+
+
+def test_animation_repetition_mode_is_a_radio_group_the_keyboard_enters_operates_and_leaves(visit):
+    """Tab reaches the checked radio of Once / Loop / Reflect, ArrowRight checks the next one,
+    Tab leaves the group and Shift+Tab comes back (WCAG 2.1.1, 2.1.2, 4.1.2)."""
+    page, _ = visit("03_exponential_coordinates")
+    group = page.locator('div.animation [role="radiogroup"]').first
+    assert group.get_attribute("aria-label") == "Repetition mode"
+    in_group = "!!document.activeElement.closest('[role=radiogroup]')"
+    page.locator("input.anim-slider").first.focus()
+    for _ in range(20):
+        page.keyboard.press("Tab")
+        if page.evaluate(in_group):
+            break
+    else:
+        pytest.fail("Tab does not reach the repetition mode")
+    before = page.evaluate("document.activeElement.value")
+    page.keyboard.press("ArrowRight")
+    after = page.evaluate("[document.activeElement.value, document.activeElement.checked]")
+    assert after[0] != before and after[1] is True
+    outline = page.evaluate("getComputedStyle(document.activeElement).outlineStyle")
+    assert outline != "none", "no visible focus on the radio"
+    page.keyboard.press("Tab")
+    assert not page.evaluate(in_group), "Tab does not leave the radio group"
+    page.keyboard.press("Shift+Tab")
+    assert page.evaluate(in_group), "Shift+Tab does not come back to the radio group"

@@ -131,3 +131,69 @@ def test_curves_of_the_double_cover_differ_in_line_style_and_label():
     finally:
         plt.close(fig)
     assert len(lines) >= 2 and len(styles) == len(lines) and len(labels) == len(lines)
+
+
+# --- the chapters' own colours (course_lib/plotting/colours.py, tools/figure_audit.py) ----------
+
+
+def _audit():
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+    import figure_audit
+
+    return figure_audit
+
+
+def test_named_tab_colours_are_the_courses_readable_shades():
+    """Regression: tab:orange lines were 2.5:1; tab:purple merged with the z axis for
+    protanopes (ΔE 4); importing course_lib.plotting puts both on readable shades."""
+    from course_lib.plotting.colours import NAMED
+
+    audit = _audit()
+    for name, shade in NAMED.items():
+        assert mc.to_hex(name) == mc.to_hex(shade)
+        assert contrast(mc.to_rgb(name), (1, 1, 1)) >= 4.5, name
+    for frame in plotting.FRAME_COLORS:
+        for kind in audit.MACHADO:
+            d = audit.delta_e(
+                audit.simulate(mc.to_rgb("tab:purple"), kind),
+                audit.simulate(mc.to_rgb(frame), kind),
+            )
+            assert d >= audit.MERGED, f"tab:purple and {frame} are {d:.1f} apart for {kind}"
+
+
+@pytest.mark.parametrize("colour", [*plotting.FRAME_COLORS, "tab:green", "tab:purple", "0.6"])
+def test_labels_are_drawn_at_4_5_to_1_in_their_lines_hue(colour):
+    text = plotting.readable(colour)
+    assert contrast(mc.to_rgb(text), (1, 1, 1)) >= 4.5
+    fig, ax = plotting.axes3d("labels")
+    plotting.draw_vector(ax, [1.0, 0.0, 0.0], label="$v$", color=colour)
+    assert [t.get_color() for t in ax.texts] == [text]
+    plt.close(fig)
+
+
+def test_default_series_differ_by_line_style_not_colour_alone():
+    import matplotlib as mpl
+
+    styles = [c["linestyle"] for c in mpl.rcParams["axes.prop_cycle"]]
+    assert len(set(map(str, styles))) == len(styles) >= 5
+    fig, ax = plt.subplots()
+    lines = [ax.plot([0, 1], [k, k])[0] for k in range(3)]
+    assert _audit().figure_problems(fig) == []
+    assert len({line.get_linestyle() for line in lines}) == 3
+    plt.close(fig)
+
+
+def test_the_audit_finds_a_line_below_3_to_1_and_a_pair_told_apart_by_colour_alone():
+    from matplotlib.figure import Figure
+
+    fig = Figure()
+    ax = fig.add_subplot()
+    ax.plot([0, 1], [0, 1], "-", color="#ff7f0e", label="old orange")
+    ax.plot([0, 1], [1, 0], "-", color="#d62728", label="red")
+    ax.plot([0, 1], [0.5, 0.5], "-", color="#2ca02c", label="green")
+    problems = _audit().figure_problems(fig)
+    assert any("'old orange' #ff7f0e is 2.53:1" in p for p in problems)
+    assert any("'red' and line 'green'" in p and "deuteranopia" in p for p in problems)

@@ -6,6 +6,7 @@ setting its value, and a mouse drag is the messages ipympl's canvas receives fro
 """
 
 import base64
+import html
 import inspect
 import io
 import os
@@ -39,6 +40,7 @@ from course_lib.interactive import (  # noqa: E402
     rotation_explorer,
     spin_animation,
 )
+from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
 from course_lib.rodrigues import (  # noqa: E402
     axis_from_spherical,
     rodrigues_terms,
@@ -406,7 +408,8 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
     for slider, (lo, hi) in zip(widget.sliders.values(), (POLAR_RANGE, AZIMUTH_RANGE, THETA_RANGE)):
         assert (slider.min, slider.max) == (lo, hi)
         assert slider.continuous_update is False  # one redraw per release, not per pixel
-    # children[0]: the focus style (WCAG 2.4.7), then the sliders, the canvas, the readout
+    # children[0]: the focus style (WCAG 2.4.7), then the sliders, the canvas, the line saying
+    # what the keyboard does on the 3D view, the readout
     assert list(widget.children[1:][:3]) == list(widget.sliders.values())
     assert (
         isinstance(widget.children[1:][3], Canvas)
@@ -416,13 +419,14 @@ def test_explorer_has_three_release_only_sliders_above_an_ipympl_canvas(make):
         widget.figure.canvas.header_visible is False
         and widget.figure.canvas.footer_visible is False
     )
+    assert widget.children[1:][4] is widget.key_help
     if make is rodrigues_explorer:
         assert (
-            isinstance(widget.children[1:][4], ipywidgets.HTMLMath)
-            and widget.readout is widget.children[1:][4]
+            isinstance(widget.children[1:][5], ipywidgets.HTMLMath)
+            and widget.readout is widget.children[1:][5]
         )
     else:
-        assert len(widget.children) == 5 and widget.readout is None
+        assert len(widget.children) == 6 and widget.readout is None
 
 
 @pytest.mark.parametrize("make", EXPLORERS)
@@ -536,12 +540,14 @@ def test_dragging_the_figure_turns_the_camera_but_not_the_geometry(make):
 
 
 @pytest.mark.parametrize("make", EXPLORERS)
-def test_explorer_stores_a_small_png_snapshot_and_a_description(make):
+def test_explorer_stores_a_small_png_snapshot_with_alt_text_and_a_description(make):
     widget = make()
     data = widget._repr_mimebundle_()
-    assert set(data) == {"application/vnd.jupyter.widget-view+json", "image/png", "text/plain"}
+    assert set(data) == {"application/vnd.jupyter.widget-view+json", "text/html", "text/plain"}
     assert data["text/plain"] == widget.description and "drag the 3D view" in widget.description
-    png = base64.b64decode(data["image/png"])
+    alt, png = figure_alt_and_png(data["text/html"])
+    assert alt == widget.alt_text() and alt.endswith("azimuth −60°.") and "θ = " in alt
+    png = base64.b64decode(png)
     assert png.startswith(b"\x89PNG") and len(png) < 40_000
     from PIL import Image
 
@@ -732,9 +738,84 @@ def test_explorer_without_ipympl_falls_back_to_its_still_picture_with_one_line(m
     assert not explorer.live and explorer.children == ()
     bundle = explorer._repr_mimebundle_()
     assert "application/vnd.jupyter.widget-view+json" not in bundle
-    png = base64.b64decode(bundle["image/png"])
+    alt, png = figure_alt_and_png(bundle["text/html"].split("<p>")[0])
+    png = base64.b64decode(png)
     assert png.startswith(b"\x89PNG") and len(png) > 5_000  # the figure, drawn
+    assert alt == explorer.alt_text()
     why = explorer.why_still
     assert "ipympl" in why and "pip install ipympl" in why and "\n" not in why
     assert bundle["text/html"].count("<img") == 1 and why in bundle["text/html"]
     assert bundle["text/plain"].splitlines()[-1] == why
+
+
+# --------------------------------------------------------------------------------------------
+# The 3D view from the keyboard (WCAG 2.1.1, 2.1.2): arrow keys turn it, + and − zoom
+# --------------------------------------------------------------------------------------------
+
+
+def _key(widget, key):
+    """The key as ipympl delivers it: a matplotlib key_press_event on the explorer's canvas."""
+    from matplotlib.backend_bases import KeyEvent
+
+    KeyEvent("key_press_event", widget.figure.canvas, key, 10, 10)._process()
+
+
+@pytest.mark.parametrize("make", EXPLORERS)
+def test_the_3d_view_turns_with_the_arrow_keys_and_zooms_with_plus_and_minus(make):
+    widget = make()
+    before = widget.snapshot()
+    _key(widget, "right")
+    assert (widget.ax.elev, widget.ax.azim) == (VIEW_ELEV, VIEW_AZIM + 10)
+    _key(widget, "up")
+    assert widget.ax.elev == VIEW_ELEV + 10
+    assert widget.snapshot() != before  # redrawn
+    assert "elevation 30°, azimuth −50°" in widget.alt_text()  # the name says the new camera
+    zoom = widget._zoom
+    _key(widget, "+")
+    assert widget._zoom > zoom
+    _key(widget, "-")
+    _key(widget, "-")
+    assert widget._zoom < zoom
+    for _ in range(8):  # the zoom stays in its range (0.9 / 1.15**8 < 0.5), the elevation at 90
+        _key(widget, "-")
+        _key(widget, "up")
+    assert widget._zoom >= 0.5 and widget.ax.elev == 90
+
+
+def test_the_3d_view_documents_its_keys_and_ignores_matplotlibs_own(tmp_path, monkeypatch):
+    """Regression: matplotlib's key map on the canvas ("s" saves a file, "q" closes, "l" turns
+    on a log scale) went on receiving the keys ipympl sends."""
+    monkeypatch.chdir(tmp_path)
+    widget = rotation_explorer()
+    assert interactive.widgets.KEYS_HELP in widget.key_help.value
+    assert "arrow keys turn it" in widget.key_help.value and "Tab" in widget.key_help.value
+    assert f'data-state="{html.escape(widget.alt_text(), quote=True)}"' in widget.key_help.value
+    camera = (widget.ax.elev, widget.ax.azim)
+    for key in ("s", "q", "l", "k", "g", "tab", "escape"):
+        _key(widget, key)
+    assert list(tmp_path.iterdir()) == [] and (widget.ax.elev, widget.ax.azim) == camera
+    assert widget.ax.get_xscale() == "linear"
+
+
+def test_the_page_script_lets_tab_and_escape_leave_the_3d_view():
+    """Regression (WCAG 2.1.2, keyboard trap): ipympl's canvas calls preventDefault() on every
+    keydown; the explorer's script stops Tab and Escape in the capture phase, before it."""
+    js = interactive.widgets._SLIDER_NAMES_JS
+    assert "addEventListener('keydown', keys, true)" in js
+    assert "event.key === 'Tab'" in js and "event.key === 'Escape'" in js
+    assert "preventDefault" not in js  # Tab keeps its default: the next focusable element
+
+
+def test_regression_the_players_repetition_mode_is_a_radio_group_not_a_form():
+    """HTML_CodeSniffer (WCAG 3.2.2, H32.2): matplotlib's player put Once/Loop/Reflect in a
+    <form> without a submit button; a radio group with its own radio names, read by id."""
+    html = spin_animation(frames=3).data
+    assert "<form" not in html and html.count('role="radiogroup"') == 1
+    group = re.search(r'<div role="radiogroup" aria-label="Repetition mode" id="(\w+)"', html)
+    assert html.count(f'name="{group.group(1)}_state"') == 3  # not "state": page-wide by name
+    assert "document[this.loop_select_id]" not in html
+    assert "getElementById(this.loop_select_id).querySelectorAll('input[type=radio]')" in html
+    # each radio inside its label (IBM's engine in JupyterLab: no label found by for= alone)
+    wrapped = r'<label for="[^"]+"><input type="radio"[^>]* aria-label="(\w+)"> (\w+)</label>'
+    names = re.findall(wrapped, html)
+    assert names == [("Once", "Once"), ("Loop", "Loop"), ("Reflect", "Reflect")]

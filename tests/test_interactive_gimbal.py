@@ -30,6 +30,7 @@ from course_lib.interactive import (  # noqa: E402
     rates_matrix,
     turn_axes,
 )
+from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
 
 degrees = st.floats(-180.0, 180.0, allow_nan=False)
 pitches = st.floats(-90.0, 90.0, allow_nan=False)
@@ -170,8 +171,10 @@ def test_gimbal_explorer_without_ipympl_shows_its_still_picture(monkeypatch):
     widget = gimbal_explorer(pitch=90)
     assert not widget.live and widget.children == ()
     bundle = widget._repr_mimebundle_()
-    png = base64.b64decode(bundle["image/png"])
+    alt, png = figure_alt_and_png(bundle["text/html"].split("<p>")[0])
+    png = base64.b64decode(png)
     assert png.startswith(b"\x89PNG") and len(png) > 5_000
+    assert "pitch θ = 90°" in alt and "gimbal lock" in alt
     assert bundle["text/plain"].splitlines() == [widget.description, widget.why_still]
 
 

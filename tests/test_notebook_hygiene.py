@@ -83,7 +83,12 @@ def test_regression_no_widget_state_and_no_widget_view_that_would_hide_the_still
     for i, output in _outputs(nb):
         assert nbtool.WIDGET_VIEW not in output.get("data", {}), f"{chapter.name} cell {i}"
         if output.get("metadata", {}).get(nbtool.EXPLORER_STILL):
-            assert "image/png" in output["data"] and "explorer" in output["data"]["text/plain"]
+            # the still with its alt text (the state shown), not a bare image/png (no alt)
+            assert "image/png" not in output["data"], f"{chapter.name} cell {i}"
+            assert (
+                'alt="' in output["data"]["text/html"]
+                and "explorer" in output["data"]["text/plain"]
+            )
 
 
 def test_no_execution_timestamps(chapter):
@@ -364,8 +369,11 @@ def test_widget_cells_do_not_stall_the_executor(tmp_path):
     seconds = nbtool.execute(nb, tmp_path)
     assert seconds < 60
     assert nb.cells[-1].outputs[0]["data"]["text/plain"] == "2"
-    # the slider's first figure, recorded as ordinary output
-    assert any("image/png" in o.get("data", {}) for o in nb.cells[1].outputs)
+    # the slider's first figure, recorded as ordinary output (an <img> with its alt text)
+    assert any(
+        '<img class="course-figure"' in o.get("data", {}).get("text/html", "")
+        for o in nb.cells[1].outputs
+    )
 
 
 @pytest.mark.notebook_exec

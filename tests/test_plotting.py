@@ -80,11 +80,13 @@ def test_every_name_of_the_old_module_is_still_on_plotting():
     missing = [name for name in OLD_NAMES if not hasattr(plotting, name)]
     assert missing == []
     # beyond the old module's names: only the figures of chapter 05, added after the split,
-    # chapter 03's orbit and spinning body (issue 37: one helper call per figure cell), and
-    # display.show, which hands a figure to the notebook as an image with alt text
+    # chapter 03's orbit and spinning body (issue 37: one helper call per figure cell),
+    # display.show, which hands a figure to the notebook as an image with alt text, and
+    # colours.readable, a label's colour at 4.5:1
     new = importlib.import_module("course_lib.plotting.figures_orientation").__all__
     new = [*new, "plot_orbit", "plot_spinning_body"]
     new = [*new, *importlib.import_module("course_lib.plotting.display").__all__]
+    new = [*new, "readable"]
     assert set(plotting.__all__) <= set(OLD_NAMES) | set(new)
     # interactive.py checks its axes with the package's _require_3d
     assert plotting._require_3d is importlib.import_module("course_lib.plotting.axes")._require_3d

@@ -216,6 +216,8 @@ def test_display_of_a_failure():
     assert str(result).startswith("✗ g fails condition 2 (relative orientation between vectors)")
     md = result._repr_markdown_()
     assert md.startswith("**✗") and "| mismatch | 2.0e+00 |" in md and "$p_1$" in md
+    # regression (IBM table_headers_exists in JupyterLab): the header row names its columns
+    assert "| counterexample | value |\n|---|---|" in md and "| | |" not in md
     assert (
         repr(result)
         == "RigidCheck(ok=False, condition='cross product', n_pairs=6, mismatch=2.0e+00)"

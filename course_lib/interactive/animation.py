@@ -171,6 +171,40 @@ _FA_ICON = re.compile(r'<i class="fa (fa-[a-z-]+(?: fa-flip-horizontal)?)"></i>'
 _FIRST_FRAME = re.compile(r'frames\[0\] = "(data:image/png;base64,[A-Za-z0-9+/=\\\n]+)"')
 _PLAYER_IMG = re.compile(r'<img id="(_anim_img[0-9a-f]+)">')
 _SLIDER = re.compile(r'(<input id="_anim_slider[0-9a-f]+" type="range")')
+# The repetition mode (Once, Loop, Reflect) is a <form> with no submit button (HTML_CodeSniffer:
+# WCAG 3.2.2, H32.2) that the player reads as document[name].state: a radio group instead, its
+# radios named after the player (radios outside a form share a group page-wide by name).
+_LOOP_FORM = re.compile(
+    r'<form title="Repetition mode" aria-label="Repetition mode" action="#n" '
+    r'name="(_anim_loop_select[0-9a-f]+)"\s*class="anim-state">(.*?)</form>',
+    re.S,
+)
+_LOOP_READ = "document[this.loop_select_id].state"
+_LOOP_READ_NEW = (
+    "document.getElementById(this.loop_select_id).querySelectorAll('input[type=radio]')"
+)
+
+
+_RADIO = re.compile(
+    r'(<input type="radio"[^>]*id="([^"]+)"[^>]*>)\s*<label for="\2">([^<]*)</label>'
+)
+
+
+def _radio_group(m):
+    radios = m.group(2).replace('name="state"', f'name="{m.group(1)}_state"')
+    # each radio inside its label and named by aria-label too: IBM's engine in JupyterLab
+    # associated neither the label's for= nor the wrapping label with the radio
+    radios = _RADIO.sub(
+        lambda r: (
+            f'<label for="{r.group(2)}">{r.group(1)[:-1].rstrip()} '
+            f'aria-label="{r.group(3).strip()}"> {r.group(3)}</label>'
+        ),
+        radios,
+    )
+    return (
+        f'<div role="radiogroup" aria-label="Repetition mode" id="{m.group(1)}" '
+        f'class="anim-state">{radios}</div>'
+    )
 
 
 def _offline_player(html, alt):
@@ -179,7 +213,8 @@ def _offline_player(html, alt):
     The Font Awesome link goes, its icons become characters (:data:`_ICONS`); the ``<img>``
     gets frame 0 as its ``src``, so the picture is there where scripts do not run (an untrusted
     notebook, a viewer) and before the player starts, with ``alt`` as its alt text (WCAG
-    1.1.1), and the frame slider gets a label (4.1.2).
+    1.1.1), and the frame slider gets a label (4.1.2); the repetition mode is a radio group,
+    not a form without a submit button (3.2.2).
     """
     html = _FA_LINK.sub("", html)
     html = _FA_ICON.sub(lambda m: f'<span aria-hidden="true">{_ICONS[m.group(1)]}</span>', html)
@@ -188,4 +223,5 @@ def _offline_player(html, alt):
         src = first.group(1).replace("\\\n", "")
         alt = html_escape(alt, quote=True)
         html = _PLAYER_IMG.sub(lambda m: f'<img id="{m.group(1)}" src="{src}" alt="{alt}">', html)
+    html = _LOOP_FORM.sub(_radio_group, html).replace(_LOOP_READ, _LOOP_READ_NEW)
     return _SLIDER.sub(r'\1 aria-label="Frame of the animation (time)"', html)

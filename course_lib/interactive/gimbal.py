@@ -200,6 +200,22 @@ def _title(yaw, pitch, roll):
     )
 
 
+def _alt(yaw, pitch, roll):
+    """What the gimbal explorer shows at these slider values, in words (its alt text)."""
+    locked = abs(abs(pitch) - 90.0) < 0.5
+    deg = [f"{a:.0f}".replace("-", "−") for a in (yaw, pitch, roll)]
+    return (
+        f"Frame B turned by yaw ψ = {deg[0]}°, pitch θ = {deg[1]}°, roll φ = {deg[2]}° "
+        "(R = Rz(ψ) Ry(θ) Rx(φ)), with the yaw, pitch and roll axes and the circles each turn "
+        "moves along; "
+        + (
+            "at this pitch the roll axis lies on the yaw axis (gimbal lock, det E = 0)."
+            if locked
+            else "the roll axis is apart from the yaw axis (no gimbal lock)."
+        )
+    )
+
+
 def gimbal_explorer(yaw=30.0, pitch=60.0, roll=20.0, *, elev=GIMBAL_ELEV, azim=GIMBAL_AZIM):
     r"""Sliders for yaw, pitch and roll (degrees), redrawing the gimbal of :func:`draw_gimbal`.
 
@@ -253,4 +269,5 @@ def gimbal_explorer(yaw=30.0, pitch=60.0, roll=20.0, *, elev=GIMBAL_ELEV, azim=G
         (elev, azim),
         lim=1.3,
         readout=gimbal_readout,
+        alt=_alt,
     )

@@ -28,6 +28,7 @@ from matplotlib.figure import Figure
 
 from .. import plotting
 from .._arrays import as_angles
+from ..plotting.display import FIGURE_CLASS
 
 __all__ = ["VIEW_ELEV", "VIEW_AZIM", "SliderSpec", "Explorer"]
 
@@ -85,35 +86,78 @@ class SliderSpec:
         self.step, self.unit, self.readout_format = step, unit, readout_format
 
 
-# WCAG 2.4.7: a focus ring the keyboard user sees on the slider handles (ipywidgets' own focus
-# style on a handle is a faint shadow); scoped to the explorers.
+# WCAG 2.4.7: a focus ring the keyboard user sees on the slider handles and the 3D view
+# (ipywidgets' own focus style on a handle is a faint shadow; #1a5fb4 is 6.4:1 on white).
+# WCAG 1.4.11: ipywidgets' slider track and handle border (#c8c8c8 / #8a8a8a on white, 1.88:1)
+# drawn in #6b6b6b (5.3:1), the filled part in #1a5fb4. Scoped to the explorers.
 _FOCUS_STYLE = (
-    "<style>.course-explorer .noUi-handle:focus, .course-explorer .widget-readout:focus "
-    "{outline: 3px solid #1a5fb4; outline-offset: 2px;}</style>"
+    "<style>.course-explorer .noUi-handle:focus, .course-explorer .widget-readout:focus, "
+    ".course-explorer .jupyter-matplotlib-canvas-div:focus "
+    "{outline: 3px solid #1a5fb4; outline-offset: 2px;}"
+    ".course-explorer .noUi-target, .course-explorer .noUi-base "
+    "{background: #fff; border: 1px solid #6b6b6b;}"
+    ".course-explorer .noUi-connect {background: #1a5fb4;}"
+    ".course-explorer .noUi-handle {border: 2px solid #6b6b6b; background: #fff;}"
+    ".course-explorer .course-keys {color: #3d3d3d; margin: 0.2em 0;}</style>"
 )
+#: What the keyboard does on the 3D view, shown under it and said by its accessible name.
+KEYS_HELP = "3D view: arrow keys turn it, + and − zoom in and out; Tab and Shift+Tab leave it."
+_TURN_STEP = 10.0  # degrees per arrow key
+_ZOOM_STEP = 1.15  # per + or − key
+_ZOOM_RANGE = (0.5, 2.0)
 
 
 # WCAG 4.1.2: ipywidgets 8 draws a FloatSlider's handle as a noUiSlider <div role="slider"> and
 # its description as a <label> tied to nothing: a screen reader hears the value, not the name.
 # The model has no trait that reaches the handle, so this script (run by JupyterLab for the
 # trusted output of a cell just run, next to the explorer) names every handle of the explorers
-# after its slider's label, now and whenever ipywidgets redraws one. Installed once a page.
+# after its slider's label, now and whenever ipywidgets redraws one.
+# WCAG 2.1.2 (no keyboard trap): ipympl's canvas <div tabindex=0> calls preventDefault() and
+# stopPropagation() on every keydown, Tab included, to send the key to the kernel: focus could
+# enter the 3D view and never leave. A capture-phase listener on the explorer lets Tab and
+# Shift+Tab do what they do everywhere (it stops the event before ipympl sees it, without
+# preventing its default), and Escape leaves the view (blur). The other keys go on to ipympl,
+# and to Explorer._on_key in the kernel (arrow keys turn the view, + and − zoom). The view gets
+# role "application" and a name saying so (KEYS_HELP). Installed once a page.
 #: Output metadata key of that script's output (tools/notebooks.py does not store it).
 SLIDER_NAMES = "course_slider_names"
 _SLIDER_NAMES_JS = """
 (function () {
   if (window.courseSliderNames) { window.courseSliderNames(); return; }
   var pending = false;
+  var CANVAS = '.jupyter-matplotlib-canvas-div';
+  function keys(event) {
+    var view = event.target.closest && event.target.closest(CANVAS);
+    if (!view) return;
+    if (event.key === 'Tab') { event.stopPropagation(); }
+    else if (event.key === 'Escape') { event.stopPropagation(); view.blur(); }
+  }
   function name() {
     pending = false;
-    document.querySelectorAll('.course-explorer .widget-slider').forEach(function (box) {
-      var label = box.querySelector('.widget-label');
-      var text = label ? label.textContent.trim() : '';
-      box.querySelectorAll('.noUi-handle').forEach(function (handle) {
-        if (text && handle.getAttribute('aria-label') !== text) {
-          handle.setAttribute('aria-label', text);
+    document.querySelectorAll('.course-explorer').forEach(function (box) {
+      box.querySelectorAll('.widget-slider').forEach(function (slider) {
+        var label = slider.querySelector('.widget-label');
+        var text = label ? label.textContent.trim() : '';
+        slider.querySelectorAll('.noUi-handle').forEach(function (handle) {
+          if (text && handle.getAttribute('aria-label') !== text) {
+            handle.setAttribute('aria-label', text);
+          }
+        });
+      });
+      var help = box.querySelector('.course-keys');
+      box.querySelectorAll(CANVAS).forEach(function (view) {
+        var text = help ? (help.getAttribute('data-state') || '') + ' ' +
+          help.textContent.trim() : '';
+        if (view.getAttribute('aria-label') !== text) {
+          view.setAttribute('role', 'application');
+          view.setAttribute('aria-label', text.trim());
         }
       });
+      if (!box.courseKeys) {
+        box.addEventListener('keydown', keys, true);
+        box.addEventListener('keyup', keys, true);
+        box.courseKeys = true;
+      }
     });
   }
   window.courseSliderNames = name;
@@ -192,7 +236,10 @@ def _canvas_figure(figsize):
         warnings.filterwarnings(
             "ignore", r"Passing unrecognized arguments to super\(Toolbar\)", DeprecationWarning
         )
-        FigureManager(canvas, 0)  # not registered with pyplot: plt.show() never shows it again
+        manager = FigureManager(canvas, 0)  # not registered with pyplot: never shown again
+    if manager.key_press_handler_id is not None:
+        # matplotlib's own keys ("s" saves, "q" closes, "l" log scale...): Explorer has its own
+        canvas.mpl_disconnect(manager.key_press_handler_id)
     canvas.header_visible = False  # no "Figure 0" line above the figure
     canvas.footer_visible = False  # no "x pane=1.2, y=..." cursor read-out below it
     canvas.resizable = False
@@ -249,6 +296,12 @@ class Explorer(ipywidgets.VBox):
         Half the side of the plotted cube.
     readout : callable, optional
         ``readout(*values)``: LaTeX shown below the figure, rewritten on every redraw.
+    alt : callable, optional
+        ``alt(*values)``: what the figure shows at these values, in words (its alt text, with
+        the camera added); default: the description's first part and the slider values.
+
+    The 3D view also turns from the keyboard (:data:`KEYS_HELP`, shown under it): the arrow
+    keys turn the camera by 10° (left/right: azimuth, up/down: elevation), + and − zoom.
 
     Attributes
     ----------
@@ -265,7 +318,9 @@ class Explorer(ipywidgets.VBox):
         One line saying what the explorer shows: the text pages without widgets display.
     """
 
-    def __init__(self, draw, pick, title, description, sliders, camera, lim, readout=None):
+    def __init__(
+        self, draw, pick, title, description, sliders, camera, lim, readout=None, alt=None
+    ):
         self.sliders = {s.description: _slider(s) for s in sliders}
         elev, azim = (_view_angle(a, n) for a, n in zip(camera, ("elev", "azim")))
         self.figure, self.why_still = _explorer_figure()
@@ -274,16 +329,23 @@ class Explorer(ipywidgets.VBox):
         self._drawn = None
         self.description = description
         self._draw, self._pick, self._title, self._lim = draw, pick, title, lim
-        self._readout = readout
+        self._readout, self._alt, self._zoom = readout, alt, _EXPLORER_ZOOM
         self.readout = ipywidgets.HTMLMath() if readout else None
-        children = [*self.sliders.values(), self.figure.canvas] if self.live else []
-        children = [ipywidgets.HTML(_FOCUS_STYLE), *children] if self.live else []
-        super().__init__(children=children + ([self.readout] if readout and self.live else []))
+        self.key_help = ipywidgets.HTML()
+        children = []
+        if self.live:
+            children = [ipywidgets.HTML(_FOCUS_STYLE), *self.sliders.values()]
+            children += [self.figure.canvas, self.key_help] + ([self.readout] if readout else [])
+        super().__init__(children=children)
         self.add_class("course-explorer")
         self._redraw(elev, azim)
         self._update_readout()
         for slider in self.sliders.values():
             slider.observe(self._on_release, names="value")
+        if self.live:
+            self.figure.canvas.mpl_connect("key_press_event", self._on_key)
+            # the camera the mouse left: in the view's accessible name too
+            self.figure.canvas.mpl_connect("button_release_event", lambda _: self._update_keys())
 
     @property
     def live(self):
@@ -307,6 +369,43 @@ class Explorer(ipywidgets.VBox):
             self.ax.set_title(title, fontsize=plotting.TITLE_SIZE)
         self._drawn = self._draw(self.ax, *self.values, elev=elev, azim=azim)
         self.result = self._pick(self._drawn)
+        self._update_keys()
+
+    def alt_text(self):
+        """What the figure shows now, in words: the state the sliders and the camera chose.
+
+        The still picture's alt text (stored in the notebook, on the site) and the 3D view's
+        accessible name in a live session.
+        """
+        if self._alt is not None:
+            what = self._alt(*self.values).strip()
+        else:
+            values = ", ".join(f"{k} = {s.value:.2f}" for k, s in self.sliders.items())
+            what = f"{self.description.split(':')[0]} at {values}."
+        elev, azim = (f"{a:.0f}".replace("-", "−") for a in (self.ax.elev, self.ax.azim))
+        return f"{what.rstrip('.')}; seen from elevation {elev}°, azimuth {azim}°."
+
+    def _update_keys(self):
+        state = html.escape(self.alt_text(), quote=True)
+        self.key_help.value = f'<p class="course-keys" data-state="{state}">{KEYS_HELP}</p>'
+
+    def _on_key(self, event):
+        """Arrow keys turn the camera by 10°, + and − zoom (the view's keyboard, KEYS_HELP)."""
+        elev, azim = self.ax.elev, self.ax.azim
+        turn = {"left": (0, -1), "right": (0, 1), "up": (1, 0), "down": (-1, 0)}
+        if event.key in turn:
+            de, da = turn[event.key]
+            elev = max(-90.0, min(90.0, elev + de * _TURN_STEP))
+            azim = (azim + da * _TURN_STEP + 180.0) % 360.0 - 180.0
+            self.ax.view_init(elev=elev, azim=azim)
+        elif event.key in ("+", "=", "-", "_", "−"):
+            factor = _ZOOM_STEP if event.key in ("+", "=") else 1 / _ZOOM_STEP
+            self._zoom = max(_ZOOM_RANGE[0], min(_ZOOM_RANGE[1], self._zoom * factor))
+            self.ax.set_box_aspect((1, 1, 1), zoom=self._zoom)
+        else:
+            return
+        self._update_keys()
+        self.figure.canvas.draw()
 
     def _update_readout(self):
         if self.readout is not None:
@@ -335,16 +434,21 @@ class Explorer(ipywidgets.VBox):
             )
 
     def _repr_mimebundle_(self, **kwargs):
+        """The widget view, and the still picture with its alt text for pages without a kernel.
+
+        The still is an HTML ``<img>`` in :func:`course_lib.plotting.figure_output`'s form (alt
+        text: :meth:`alt_text`, the state shown), not an ``image/png`` output: JupyterLab opens
+        a stored notebook without the widget state and would show an ``image/png`` with no alt.
+        """
         png = base64.b64encode(self.snapshot()).decode("ascii")
+        alt = html.escape(" ".join(self.alt_text().split()), quote=True)
+        img = f'<img class="{FIGURE_CLASS}" alt="{alt}" src="data:image/png;base64,{png}">'
         if not self.live:  # the still picture, and one line saying why
-            alt = html.escape(self.description, quote=True)
             return {
                 "text/plain": f"{self.description}\n{self.why_still}",
-                "image/png": png,
-                "text/html": f'<img src="data:image/png;base64,{png}" alt="{alt}">'
-                f"<p><em>{html.escape(self.why_still)}</em></p>",
+                "text/html": f"{img}<p><em>{html.escape(self.why_still)}</em></p>",
             }
         data = super()._repr_mimebundle_(**kwargs)
         data["text/plain"] = self.description
-        data["image/png"] = png
+        data["text/html"] = img
         return data

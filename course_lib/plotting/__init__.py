@@ -62,6 +62,7 @@ module                          what it holds
 :mod:`.figures_composition`     chapter 04: frames side by side, the geodesic
 :mod:`.figures_orientation`     chapter 05: Euler turns, gimbal lock, the double cover, slerp
 :mod:`.display`                 :func:`show`: a figure shown with its alt text (not ``plt.show()``)
+:mod:`.colours`                 colours every reader tells apart (labels 4.5:1, no colour alone)
 ==============================  ===============================================================
 
 Input is checked by the one validation layer, :mod:`course_lib._arrays`.
@@ -71,6 +72,7 @@ from .axes import DPI, FONT_SIZE, TITLE_SIZE, axes2d, axes3d, axes_row
 from .axes import FIGSIZE as FIGSIZE
 from .axes import PANEL_SIZE as PANEL_SIZE
 from .axes import _require_3d as _require_3d  # course_lib.interactive checks its axes with it
+from .colours import readable, use_named
 from .display import figure_output, show
 from .figures_accuracy import plot_convergence, plot_error_curves
 from .figures_composition import frame_panels, plot_geodesic
@@ -133,4 +135,7 @@ __all__ = [
     "plot_spinning_body",
     "show",
     "figure_output",
+    "readable",
 ]
+
+use_named()  # tab:orange, tab:purple, tab:gray on readable shades; series differ by line style

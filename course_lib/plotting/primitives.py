@@ -25,6 +25,7 @@ from .._arrays import (
 )
 from ..tolerance import TOL, fmt_residual, tol_label
 from .axes import FONT_SIZE, _dim
+from .colours import readable
 
 __all__ = [
     "FRAME_COLORS",
@@ -137,7 +138,7 @@ def _offset(ax):
 def _text(ax, pos, s, color="black", **kwargs):
     kwargs.setdefault("ha", "center")
     kwargs.setdefault("va", "center")
-    return ax.text(*pos, s, color=color, fontsize=FONT_SIZE, **kwargs)
+    return ax.text(*pos, s, color=readable(color), fontsize=FONT_SIZE, **kwargs)
 
 
 def _arrow(ax, start, end, color, linestyle="-", linewidth=1.8):

@@ -22,7 +22,9 @@ import argparse
 import importlib.util
 import json
 import sys
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import replace
+from functools import cache, lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -206,20 +208,43 @@ def fingerprint(ex, code, mistakes, params=None):
     return FINGERPRINTS[type(ex.answer)](ex, answer, wrong)
 
 
-def build():
-    """All fingerprints, as the JSON-ready dict."""
-    out = {}
+def build(sample=None, jobs=None):
+    """All fingerprints, as the JSON-ready dict; ``sample(count)``: only the default and these
+    row indices of every variant table (a test's deterministic sample). The rows are
+    fingerprinted by ``jobs`` processes (all cores by default; every row is its own task)."""
+    out, tasks = {}, []
     for chapter in exercise_bank.CHAPTERS:
         sols, mistakes = solutions(chapter)
         for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
             if ex.name not in sols:
                 raise ValueError(f"{ex.name}: no reference solution in tools/solutions")
-            wrong = mistakes.get(ex.name, {})
-            out[ex.name] = fingerprint(ex, sols[ex.name], wrong)
-            for k, params in enumerate(variant_rows(ex)[1:], start=1):
-                named = replace(ex, name=variant_name(ex.name, k))
-                out[named.name] = fingerprint(named, sols[ex.name], wrong, params)
+            out[ex.name] = fingerprint(ex, sols[ex.name], mistakes.get(ex.name, {}))
+            rows = variant_rows(ex)
+            indices = range(1, len(rows)) if sample is None else sorted(set(sample(len(rows))))
+            tasks += [(ex.name, k, rows[k]) for k in indices if k > 0]
+    if jobs == 1 or len(tasks) < 50:
+        done = map(_row_fingerprint, tasks)
+    else:
+        with ProcessPoolExecutor(max_workers=jobs) as pool:
+            done = list(pool.map(_row_fingerprint, tasks, chunksize=64))
+    for (name, k, _), fp in zip(tasks, done):
+        out[variant_name(name, k)] = fp
     return out
+
+
+def _row_fingerprint(task):
+    """The fingerprint of row ``k`` of the variant table of exercise ``name`` (a task of
+    :func:`build`, run in a worker process)."""
+    name, k, params = task
+    ex = EXERCISES[name]
+    sols, mistakes = _solutions_cached(ex.chapter)
+    named = replace(ex, name=variant_name(name, k))
+    return fingerprint(named, sols[name], mistakes.get(name, {}), params)
+
+
+@cache
+def _solutions_cached(chapter):
+    return solutions(chapter)
 
 
 def variant_rows(ex):
@@ -227,10 +252,15 @@ def variant_rows(ex):
     ``tools/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
     if ex.variants is None:
         return []
-    rows = json.loads(TABLES.read_text())["keys"].get(ex.variants.key) if TABLES.exists() else None
+    rows = _tables().get(ex.variants.key)
     if not rows or rows[0] != ex.variants.default:
         raise ValueError(f"{ex.name}: no variant table or a stale one: run tools/variant_tables.py")
     return rows
+
+
+@lru_cache(maxsize=1)
+def _tables():
+    return json.loads(TABLES.read_text())["keys"] if TABLES.exists() else {}
 
 
 def dumps(data):

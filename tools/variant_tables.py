@@ -34,11 +34,12 @@ from course_lib.exercises import EXERCISES  # noqa: E402
 from course_lib.exercises._variants import TABLE_FILE  # noqa: E402
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
-#: Variants per key, the default included: 1 in 32 students share a neighbour's numbers.
-COUNT = 32
-#: Fewer different fit draws than this (in 20 x COUNT tries) is an error; between this and
-#: COUNT the key keeps what it has (a small space: the 18 unit quaternions of 5.2, say).
-MIN_ROWS = 8
+#: Variants per key, the default included (issue 33: at least 1,000 per exercise; with a
+#: hash of the id modulo COUNT, a student of a class of 200 shares a key's numbers with some
+#: classmate with probability 1 − (1 − 1/COUNT)^199, 18 % here: docs/variants.md).
+COUNT = 1024
+#: Fewer different fit draws than this (in 40 x COUNT tries) is an error.
+MIN_ROWS = 1000
 
 
 def key_seed(key):
@@ -66,10 +67,11 @@ def build(enabled=True):
         unfit = variant_draws.problems(key, default)
         if unfit:
             raise ValueError(f"variant key {key}: its default is unfit: {unfit}")
-        rows = [default]
-        for seed in range(1, 20 * COUNT):  # every row different: a repeat is drawn again
+        rows, seen = [default], {json.dumps(default, sort_keys=True)}
+        for seed in range(1, 40 * COUNT):  # every row different: a repeat is drawn again
             row = variant_draws.draw(key, [key_seed(key), seed])
-            if row not in rows:
+            if json.dumps(row, sort_keys=True) not in seen:
+                seen.add(json.dumps(row, sort_keys=True))
                 rows.append(row)
             if len(rows) == COUNT:
                 break

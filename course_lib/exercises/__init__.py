@@ -81,6 +81,7 @@ from ..symbolic import (
 from ._check import expected_shape_phrase, judge
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants, format_parameter
 from ._reading import Rejected
+from ._store import Fingerprints
 from ._variants import (
     identity_line,
     set_student_id,
@@ -248,7 +249,7 @@ def show(name):
 @lru_cache(maxsize=1)
 def _fingerprints():
     text = resources.files(exercise_bank).joinpath("fingerprints.json").read_text()
-    return json.loads(text)
+    return Fingerprints(json.loads(text))  # the variant rows unpacked on demand (_store)
 
 
 def check(name, answer):

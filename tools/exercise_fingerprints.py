@@ -229,7 +229,7 @@ def build(sample=None, jobs=None, reuse=False):
             rows = variant_rows(ex)
             if not rows:
                 continue
-            if ex.name in old and old[ex.name][0] == inputs_digest(ex, sols, mistakes, rows):
+            if _can_reuse(old.get(ex.name), inputs_digest(ex, sols, mistakes, rows), ex, rows):
                 stored = old[ex.name][1]
                 out |= {variant_name(ex.name, k): stored[variant_name(ex.name, k)]
                         for k in range(1, len(rows))}  # fmt: skip
@@ -293,6 +293,14 @@ def inputs_of(data):
             if rows and variant_name(ex.name, 1) in data:
                 out[ex.name] = inputs_digest(ex, sols, mistakes, rows)
     return out
+
+
+def _can_reuse(old, digest, ex, rows):
+    """Were the stored rows of ``ex`` made from these inputs, and are they all there?"""
+    if old is None or old[0] != digest:
+        return False
+    last, beyond = variant_name(ex.name, len(rows) - 1), variant_name(ex.name, len(rows))
+    return last in old[1] and beyond not in old[1]
 
 
 def _reusable():

@@ -212,13 +212,15 @@ def fingerprint(ex, code, mistakes, params=None):
     return FINGERPRINTS[type(ex.answer)](ex, answer, wrong)
 
 
-def build(sample=None, jobs=None, reuse=False):
+def build(sample=None, jobs=None, reuse=False, checkpoint=None):
     """All fingerprints, as the JSON-ready dict; ``sample(count)``: only the default and these
     row indices of every variant table (a test's deterministic sample). The rows are
     fingerprinted by ``jobs`` processes (all cores by default; every row is its own task).
     ``reuse``: an exercise whose inputs (:func:`inputs_digest`) are those recorded in
-    :data:`INPUTS` keeps the rows stored in :data:`TARGET` (what ``make exercises`` does)."""
-    out, tasks = {}, []
+    :data:`INPUTS` keeps the rows stored in :data:`TARGET` (what ``make exercises`` does).
+    ``checkpoint(out)`` is called after each exercise's rows (``main`` writes the files then,
+    so that a run cut short resumes where it stopped)."""
+    out, todo = {}, []
     old = _reusable() if reuse else {}
     for chapter in exercise_bank.CHAPTERS:
         sols, mistakes = solutions(chapter)
@@ -235,14 +237,21 @@ def build(sample=None, jobs=None, reuse=False):
                         for k in range(1, len(rows))}  # fmt: skip
                 continue
             indices = range(1, len(rows)) if sample is None else sorted(set(sample(len(rows))))
-            tasks += [(ex.name, k, rows[k]) for k in indices if 0 < k < len(rows)]
-    if jobs == 1 or len(tasks) < 50:
-        done = map(_row_fingerprint, tasks)
-    else:
-        with ProcessPoolExecutor(max_workers=jobs) as pool:
-            done = list(pool.map(_row_fingerprint, tasks, chunksize=64))
-    for (name, k, _), fp in zip(tasks, done):
-        out[variant_name(name, k)] = fp
+            todo.append([(ex.name, k, rows[k]) for k in indices if 0 < k < len(rows)])
+    pool = None if jobs == 1 or sample is not None else ProcessPoolExecutor(max_workers=jobs)
+    try:
+        for tasks in todo:
+            done = (
+                map(_row_fingerprint, tasks)
+                if pool is None
+                else pool.map(_row_fingerprint, tasks, chunksize=16)
+            )
+            out |= {variant_name(name, k): fp for (name, k, _), fp in zip(tasks, done)}
+            if checkpoint is not None:
+                checkpoint(out)
+    finally:
+        if pool is not None:
+            pool.shutdown(cancel_futures=True)
     return out
 
 
@@ -253,7 +262,10 @@ def _row_fingerprint(task):
     ex = EXERCISES[name]
     sols, mistakes = _solutions_cached(ex.chapter)
     named = replace(ex, name=variant_name(name, k))
-    return fingerprint(named, sols[name], mistakes.get(name, {}), params)
+    try:
+        return fingerprint(named, sols[name], mistakes.get(name, {}), params)
+    except Exception as err:
+        raise ValueError(f"{named.name} ({params}): {err}") from err
 
 
 @cache
@@ -345,6 +357,14 @@ def _count(data, base):
     return n + 1
 
 
+def _write(data):
+    """Write the fingerprints and what each exercise's rows were made from; the text."""
+    text = dumps(data)
+    TARGET.write_text(text)
+    INPUTS.write_text(json.dumps(inputs_of(data), indent=1, sort_keys=True) + "\n")
+    return text
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument(
@@ -357,14 +377,12 @@ def main(argv=None):
         "--full", action="store_true", help="recompute every row (not only changed exercises)"
     )
     args = parser.parse_args(argv)
-    data = build(jobs=args.jobs, reuse=not (args.full or args.check))
-    text = dumps(data)
     if args.check:
-        same = TARGET.exists() and TARGET.read_text() == text
+        same = TARGET.exists() and TARGET.read_text() == dumps(build(jobs=args.jobs))
         print("fingerprints up to date" if same else "fingerprints out of date")
         return 0 if same else 1
-    TARGET.write_text(text)
-    INPUTS.write_text(json.dumps(inputs_of(data), indent=1, sort_keys=True) + "\n")
+    data = build(jobs=args.jobs, reuse=not args.full, checkpoint=_write)
+    text = _write(data)
     stored = Fingerprints(json.loads(text))
     for name in sorted(n for n in stored if "@" not in n):
         fp = stored[name]

@@ -86,10 +86,20 @@ def _gimbal(rng):
     return {"roll": tenths // 10 if tenths % 10 == 0 else tenths / 10}
 
 
+def _sympy_size(degrees):
+    """How many nodes sympy's exact cos and sin of ``degrees`` have (the solution is exact)."""
+    import sympy as sp
+
+    phi = sp.pi * sp.Rational(str(degrees)) / 180
+    return max(len(list(sp.preorder_traversal(f(phi)))) for f in (sp.cos, sp.sin))
+
+
 def _gimbal_problems(p):
     phi = np.radians(p["roll"])
     near = abs((p["roll"] + 45) % 90 - 45)  # degrees from the nearest multiple of 90°
     out = [] if near >= 5 else ["roll within 5° of a multiple of 90°: a column near an axis"]
+    if _sympy_size(p["roll"]) > 40:  # e.g. 25.5°: the reader refuses the exact answer
+        out.append("sympy writes cos and sin of this roll as long nested radicals")
     # the body-frame columns at pitch 90°: roll e_x, pitch R_x(φ)ᵀ e_y; their normal n
     roll_col, pitch_col = np.array([1.0, 0, 0]), np.array([0, np.cos(phi), -np.sin(phi)])
     n = np.cross(roll_col, pitch_col)

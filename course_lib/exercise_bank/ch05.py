@@ -108,16 +108,16 @@ the 3-vector $(\alpha, \beta, \gamma)$ in radians.
         variants=Variants(
             "ch05_euler",
             {
-                "R_tex": r"\begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\"
-                "\n"
-                r"\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\"
-                "\n"
-                r"-\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}",
                 "R": [
                     ["1/2", "sqrt(3)/2", "0"],
                     ["sqrt(3)/4", "-1/4", "-sqrt(3)/2"],
                     ["-3/4", "sqrt(3)/4", "-1/2"],
                 ],
+                "R_tex": r"\begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\"
+                "\n"
+                r"\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\"
+                "\n"
+                r"-\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}",
             },
         ),
     ),
@@ -160,9 +160,9 @@ unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
         level="challenge",
         title="How fast does slerp turn?",
         statement=r"""
-A body moves from the orientation $q_0 = <<q0_tex>>$
-to $q_1 = <<q1_tex>>$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$ with the
-duration $T = <<T>>$ s, taking the shorter way as the chapter's slerp does. Its angular velocity is
+In $T = <<T>>$ s, a body moves from the orientation $q_0 = <<q0_tex>>$
+to $q_1 = <<q1_tex>>$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$,
+taking the shorter way as the chapter's slerp does. Its angular velocity is
 constant. Give it in **world** coordinates, in rad/s: a 3-vector $\omega$ with
 $\dot R = \hat\omega R$.
 """,
@@ -185,12 +185,12 @@ $\dot R = \hat\omega R$.
         variants=Variants(
             "ch05_slerp",
             {
-                "q0_tex": r"\big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)",
-                "q1_tex": r"\big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},"
-                r" -\tfrac{\sqrt6}{4}\big)",
                 "T": 3,
                 "q0": [2**0.5 / 2, 2**0.5 / 2, 0.0, 0.0],
                 "q1": [-(2**0.5) / 4, -(2**0.5) / 4, -(6**0.5) / 4, -(6**0.5) / 4],
+                "q0_tex": r"\big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)",
+                "q1_tex": r"\big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},"
+                r" -\tfrac{\sqrt6}{4}\big)",
             },
         ),
     ),

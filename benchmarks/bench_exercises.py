@@ -12,6 +12,11 @@
    long string). The digest cache is emptied before every call, so each call pays for all its
    digests. Target: at most 200 ms.
 3. **Hostile input.** The inputs of issue 17, each once; target: a message within 1 s.
+4. **Variants** (issue 33). The one-time cost of reading the variant tables and the
+   fingerprints in a fresh process (the first check of a session); then, for every exercise
+   with variants, check() of a student on the table's last row (right, and its first known
+   mistake) and the grader's verdict on that student's right answer (``grader.verify``:
+   the reference solution run on the student's numbers), median of REPEATS.
 
 CPU time is what the machine is asked to do; the wall clock on a shared machine also counts
 the time other processes hold the core.
@@ -19,7 +24,9 @@ the time other processes hold the core.
 
 import functools
 import hashlib
+import os
 import statistics
+import subprocess
 import sys
 import time
 from decimal import Decimal
@@ -191,10 +198,87 @@ def hostile_costs():
     print(f"   slowest {worst * 1e3:.0f} ms (target {HOSTILE_TARGET * 1e3:.0f} ms)")
 
 
+def load_costs():
+    """Wall clock of reading the tables and the fingerprints in a fresh process, best of 3."""
+    code = (
+        "import time; from course_lib.exercises import _fingerprints; "
+        "from course_lib.exercises._variants import table; t = time.perf_counter(); "
+        "table(); _fingerprints(); print(time.perf_counter() - t)"
+    )
+    env = {**os.environ, "PYTHONPATH": str(ROOT)}
+    runs = [
+        float(
+            subprocess.run(
+                [sys.executable, "-c", code],
+                capture_output=True,
+                text=True,
+                check=True,
+                env=env,
+                cwd=ROOT,
+            ).stdout
+        )  # fmt: skip
+        for _ in range(3)
+    ]
+    return min(runs)
+
+
+def _last_row_student(ex):
+    from course_lib.exercises import _variants as V
+
+    rows = V.table()["keys"].get(ex.variants.key) or [None]
+    salt = [s for s in [V.table().get("salts", {}).get(ex.variants.key)] if s]
+    target = len(rows) - 1
+    return next(
+        f"s{i}" for i in range(10**6) if V.variant_index(ex.variants.key, len(rows), f"s{i}", *salt)
+        == target
+    )  # fmt: skip
+
+
+def _graded(verify, name, record, sid):
+    """The grader's verdict with its cache of reference answers emptied: every student of a
+    class has other numbers, so grading runs the solution each time."""
+    verify.expected.cache_clear()
+    return verify.verdict(name, record, sid)
+
+
+def variant_costs():
+    from course_lib.exercises import parameters, set_student_id
+    from course_lib.record import answer_record
+    from grader import verify
+
+    print("4. Variants: reading the tables and fingerprints once, then one check() / verdict")
+    print(f"   first read in a fresh process: {load_costs() * 1e3:.0f} ms wall")
+    print(f"   {'exercise':26} {'right':>13} {'wrong':>13} {'grade':>13}   (ms, median wall/CPU)")
+    worst = 0.0
+    for name, ex in exercises.EXERCISES.items():
+        if ex.variants is None:
+            continue
+        sid = _last_row_student(ex)
+        set_student_id(sid)
+        sols, mistakes = F.solutions(ex.chapter)
+        ns = F.run(ex, sols[name], parameters(name))
+        right = ns[ex.answer_variable]
+        wrong = eval(next(iter(mistakes[name].values())), ns) if mistakes.get(name) else -right
+        record = answer_record(name, right)
+        cells = []
+        for fn in (
+            functools.partial(check, name, right),
+            functools.partial(check, name, wrong),
+            functools.partial(_graded, verify, name, record, sid),
+        ):
+            mw, ww, mc, wc = timings(fn)
+            worst = max(worst, ww)
+            cells.append(f"{mw * 1e3:5.0f}/{mc * 1e3:5.0f}")
+        print(f"   {name:26} " + " ".join(f"{c:>13}" for c in cells))
+    set_student_id(None)
+    print(f"   slowest: {worst * 1e3:.0f} ms wall\n")
+
+
 def main():
     guess_costs()
     check_costs()
     hostile_costs()
+    variant_costs()
 
 
 if __name__ == "__main__":

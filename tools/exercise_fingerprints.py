@@ -19,10 +19,13 @@ own values (the tool prints which ones).
 from __future__ import annotations
 
 import argparse
+import hashlib
 import importlib.util
 import json
 import sys
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import replace
+from functools import cache, lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -37,6 +40,7 @@ from course_lib.exercises import _digests as D  # noqa: E402
 from course_lib.exercises import _engine as E  # noqa: E402
 from course_lib.exercises._check import _numbers  # noqa: E402
 from course_lib.exercises._reading import read_answer, read_choice  # noqa: E402
+from course_lib.exercises._store import FIELD, Fingerprints, pack  # noqa: E402
 from course_lib.exercises._transforms import (  # noqa: E402
     EXPR_TRANSFORMS,
     NUMBER_OPS,
@@ -45,6 +49,8 @@ from course_lib.exercises._transforms import (  # noqa: E402
 from course_lib.exercises._variants import TABLE_FILE, variant_name  # noqa: E402
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / "fingerprints.json"
+#: What each exercise's variant fingerprints were made from (instructor side, not shipped).
+INPUTS = ROOT / "tools" / "fingerprint_inputs.json"
 TABLES = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 
 
@@ -206,20 +212,65 @@ def fingerprint(ex, code, mistakes, params=None):
     return FINGERPRINTS[type(ex.answer)](ex, answer, wrong)
 
 
-def build():
-    """All fingerprints, as the JSON-ready dict."""
-    out = {}
+def build(sample=None, jobs=None, reuse=False, checkpoint=None):
+    """All fingerprints, as the JSON-ready dict; ``sample(count)``: only the default and these
+    row indices of every variant table (a test's deterministic sample). The rows are
+    fingerprinted by ``jobs`` processes (all cores by default; every row is its own task).
+    ``reuse``: an exercise whose inputs (:func:`inputs_digest`) are those recorded in
+    :data:`INPUTS` keeps the rows stored in :data:`TARGET` (what ``make exercises`` does).
+    ``checkpoint(out)`` is called after each exercise's rows (``main`` writes the files then,
+    so that a run cut short resumes where it stopped)."""
+    out, todo = {}, []
+    old = _reusable() if reuse else {}
     for chapter in exercise_bank.CHAPTERS:
         sols, mistakes = solutions(chapter)
         for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
             if ex.name not in sols:
                 raise ValueError(f"{ex.name}: no reference solution in tools/solutions")
-            wrong = mistakes.get(ex.name, {})
-            out[ex.name] = fingerprint(ex, sols[ex.name], wrong)
-            for k, params in enumerate(variant_rows(ex)[1:], start=1):
-                named = replace(ex, name=variant_name(ex.name, k))
-                out[named.name] = fingerprint(named, sols[ex.name], wrong, params)
+            out[ex.name] = fingerprint(ex, sols[ex.name], mistakes.get(ex.name, {}))
+            rows = variant_rows(ex)
+            if not rows:
+                continue
+            if _can_reuse(old.get(ex.name), inputs_digest(ex, sols, mistakes, rows), ex, rows):
+                stored = old[ex.name][1]
+                out |= {variant_name(ex.name, k): stored[variant_name(ex.name, k)]
+                        for k in range(1, len(rows))}  # fmt: skip
+                continue
+            indices = range(1, len(rows)) if sample is None else sorted(set(sample(len(rows))))
+            todo.append([(ex.name, k, rows[k]) for k in indices if 0 < k < len(rows)])
+    pool = None if jobs == 1 or sample is not None else ProcessPoolExecutor(max_workers=jobs)
+    try:
+        for tasks in todo:
+            done = (
+                map(_row_fingerprint, tasks)
+                if pool is None
+                else pool.map(_row_fingerprint, tasks, chunksize=16)
+            )
+            out |= {variant_name(name, k): fp for (name, k, _), fp in zip(tasks, done)}
+            if checkpoint is not None:
+                checkpoint(out)
+    finally:
+        if pool is not None:
+            pool.shutdown(cancel_futures=True)
     return out
+
+
+def _row_fingerprint(task):
+    """The fingerprint of row ``k`` of the variant table of exercise ``name`` (a task of
+    :func:`build`, run in a worker process)."""
+    name, k, params = task
+    ex = EXERCISES[name]
+    sols, mistakes = _solutions_cached(ex.chapter)
+    named = replace(ex, name=variant_name(name, k))
+    try:
+        return fingerprint(named, sols[name], mistakes.get(name, {}), params)
+    except Exception as err:
+        raise ValueError(f"{named.name} ({params}): {err}") from err
+
+
+@cache
+def _solutions_cached(chapter):
+    return solutions(chapter)
 
 
 def variant_rows(ex):
@@ -227,16 +278,91 @@ def variant_rows(ex):
     ``tools/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
     if ex.variants is None:
         return []
-    rows = json.loads(TABLES.read_text())["keys"].get(ex.variants.key) if TABLES.exists() else None
+    rows = _tables().get(ex.variants.key)
     if not rows or rows[0] != ex.variants.default:
         raise ValueError(f"{ex.name}: no variant table or a stale one: run tools/variant_tables.py")
     return rows
 
 
+def inputs_digest(ex, sols, mistakes, rows):
+    """SHA-256 of what an exercise's variant fingerprints are made from: its chapter's set-up,
+    its answer, solution and known mistakes, and the rows of its table. (The library's digest
+    code is not in it: after changing that, run with ``--full``.)"""
+    setup = exercise_bank.chapter_module(ex.chapter).SETUP
+    parts = [setup, repr(ex.answer), sols[ex.name], json.dumps(mistakes.get(ex.name, {}))]
+    parts.append(json.dumps(rows, sort_keys=True))
+    return hashlib.sha256("\x00".join(parts).encode()).hexdigest()
+
+
+def inputs_of(data):
+    """The :func:`inputs_digest` of every exercise with variants (instructor side, in
+    :data:`INPUTS`: never shipped)."""
+    out = {}
+    for chapter in exercise_bank.CHAPTERS:
+        sols, mistakes = solutions(chapter)
+        for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
+            rows = variant_rows(ex)
+            if rows and variant_name(ex.name, 1) in data:
+                out[ex.name] = inputs_digest(ex, sols, mistakes, rows)
+    return out
+
+
+def _can_reuse(old, digest, ex, rows):
+    """Were the stored rows of ``ex`` made from these inputs, and are they all there?"""
+    if old is None or old[0] != digest:
+        return False
+    last, beyond = variant_name(ex.name, len(rows) - 1), variant_name(ex.name, len(rows))
+    return last in old[1] and beyond not in old[1]
+
+
+def _reusable():
+    """Exercise -> (inputs digest, the stored fingerprints) from the last run."""
+    if not (TARGET.exists() and INPUTS.exists()):
+        return {}
+    stored = Fingerprints(json.loads(TARGET.read_text()))
+    return {name: (digest, stored) for name, digest in json.loads(INPUTS.read_text()).items()}
+
+
+@lru_cache(maxsize=1)
+def _tables():
+    return json.loads(TABLES.read_text())["keys"] if TABLES.exists() else {}
+
+
 def dumps(data):
-    """JSON with one exercise per line (diffs show which exercise changed)."""
-    rows = [f"{json.dumps(k)}: {json.dumps(data[k], sort_keys=True)}" for k in sorted(data)]
-    return "{\n" + ",\n".join(rows) + "\n}\n"
+    """JSON with one exercise per line (diffs show which exercise changed), the rows of the
+    variant tables packed (``course_lib/exercises/_store.py``), one row per line."""
+    plain = sorted(k for k in data if "@" not in k)
+    lines = [f"{json.dumps(k)}: {json.dumps(data[k], sort_keys=True)}" for k in plain]
+    packed = []
+    for base in plain:
+        records = [data[f"{base}@{k}"] for k in range(1, _count(data, base))]
+        if records:
+            p = pack(records)
+            rows = ",\n".join(f"      {json.dumps(r)}" for r in p["rows"])
+            packed.append(
+                f'    {json.dumps(base)}: {{"templates": {json.dumps(p["templates"])}, '
+                f'"rows": [\n{rows}\n    ]}}'
+            )
+    if packed:
+        lines.append(f"{json.dumps(FIELD)}: {{\n" + ",\n".join(packed) + "\n  }")
+    return "{\n" + ",\n".join(lines) + "\n}\n"
+
+
+def _count(data, base):
+    """1 + the number of rows ``base@1``, ``base@2``, ... in ``data`` (they must be
+    consecutive: a gap is an error)."""
+    n = sum(1 for k in data if k.startswith(f"{base}@"))
+    if any(f"{base}@{k}" not in data for k in range(1, n + 1)):
+        raise ValueError(f"{base}: the rows of its variant table are not consecutive")
+    return n + 1
+
+
+def _write(data):
+    """Write the fingerprints and what each exercise's rows were made from; the text."""
+    text = dumps(data)
+    TARGET.write_text(text)
+    INPUTS.write_text(json.dumps(inputs_of(data), indent=1, sort_keys=True) + "\n")
+    return text
 
 
 def main(argv=None):
@@ -246,20 +372,26 @@ def main(argv=None):
         action="store_true",
         help="only compare with the stored file (exit 1 if it differs)",
     )
+    parser.add_argument("--jobs", type=int, default=None, help="worker processes (all cores)")
+    parser.add_argument(
+        "--full", action="store_true", help="recompute every row (not only changed exercises)"
+    )
     args = parser.parse_args(argv)
-    text = dumps(build())
     if args.check:
-        same = TARGET.exists() and TARGET.read_text() == text
+        same = TARGET.exists() and TARGET.read_text() == dumps(build(jobs=args.jobs))
         print("fingerprints up to date" if same else "fingerprints out of date")
         return 0 if same else 1
-    TARGET.write_text(text)
-    for name, fp in sorted(json.loads(text).items()):
+    data = build(jobs=args.jobs, reuse=not args.full, checkpoint=_write)
+    text = _write(data)
+    stored = Fingerprints(json.loads(text))
+    for name in sorted(n for n in stored if "@" not in n):
+        fp = stored[name]
         kept = [
             m for m, rec in fp["mistakes"].items() if "transform" not in rec and "mask" not in rec
         ]
         if kept:
             print(f"{name}: mistakes stored as digests of their values: {', '.join(kept)}")
-    print(f"wrote {TARGET.relative_to(ROOT)} ({len(json.loads(text))} exercises)")
+    print(f"wrote {TARGET.relative_to(ROOT)} ({len(stored)} exercises and variants)")
     return 0
 
 

@@ -37,6 +37,8 @@ $a$ and the initial value $x(0)$. Give the pair $(a,\ x(0))$ (numbers; exact sym
             "they are <<gap>> time units apart, not <<t2>>.",
             "at_zero": "x(<<t1>>) = <<x1>> is measured at t = <<t1>>, not at t = 0: put "
             "t = <<t1>> into (106) and solve for x(0).",
+            "no_division": "the log of the ratio is a·(<<t2>> − <<t1>>), the rate times the "
+            "time between the measurements: divide it by that time to get a.",
         },
         variants=Variants("ch03_growth", {"t1": 1, "x1": 3, "t2": 3, "x2": 12, "gap": 2}),
     ),

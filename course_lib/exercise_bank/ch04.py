@@ -97,6 +97,9 @@ $R - R^T = 2\sin\theta\,\hat\omega$. Give a 3-vector.
         mistakes={
             "unnormalized": "an axis is a unit vector: divide by 2 sin θ (or by its length).",
             "no_two": "R − Rᵀ is twice the skew part sin θ ω̂: mind the factor 2.",
+            "sign": "that axis points the other way: in ω̂ the entry (3, 2) is +ω₁ and the "
+            "entry (2, 3) is −ω₁ (likewise for ω₂ and ω₃); read each one below or above the "
+            "diagonal accordingly.",
         },
         variants=Variants(
             "ch04_axis",
@@ -128,6 +131,8 @@ world frame). Give a 3x3 array.
             "all_body": "the last turn is about a world axis: it multiplies from the left.",
             "all_world": "the second turn is about the camera's own axis: it multiplies from "
             "the right.",
+            "swapped": "the two rules are the other way round: a turn about a world axis "
+            "multiplies from the left, one about the camera's own axis from the right.",
         },
         variants=Variants(
             "ch04_camera", {"a1": 90, "axis1": "z", "a2": 90, "axis2": "x", "a3": 60, "axis3": "x"}

@@ -37,6 +37,8 @@ axis through $<<direction>>$ (a direction, not yet a unit vector), with $w > 0$.
             "scalar_last": "this course writes the scalar first, (w, x, y, z), not ROS's "
             "(x, y, z, w).",
             "negated": "−q is the same rotation as q; the exercise fixes the sign by w > 0.",
+            "degrees": "cos and sin take radians: convert the angle from degrees before "
+            "halving it.",
         },
         variants=Variants("ch05_turn", {"angle": 90, "direction": [1, 2, 2]}),
     ),
@@ -48,7 +50,7 @@ axis through $<<direction>>$ (a direction, not yet a unit vector), with $w > 0$.
         title="The angle of a ROS orientation",
         statement=r"""
 A ROS message holds the orientation `x: <<x>>, y: <<y>>, z: <<z>>, w: <<w>>` (scalar last).
-It is a turn about the $<<axis>>$ axis. By what angle $\theta$, in radians, between $0$ and
+It is a turn about a fixed axis. By what angle $\theta$, in radians, between $0$ and
 $\pi$? Give a number.
 """,
         answer=Value(angle=True, ranges=(("θ", 0.0, pi),)),
@@ -58,7 +60,7 @@ $\pi$? Give a number.
             "scalar_first": "ROS writes the scalar last: w is the fourth number, not the first.",
             "half": "that is θ/2: a quaternion holds half the angle.",
         },
-        variants=Variants("ch05_ros", {"x": 0.0, "y": 0.0, "z": 0.6, "w": 0.8, "axis": "z"}),
+        variants=Variants("ch05_ros", {"x": 0.0, "y": 0.0, "z": 0.6, "w": 0.8}),
     ),
     Exercise(
         name="compose_quaternions",
@@ -90,9 +92,7 @@ final orientation, with $w > 0$. Give a 4-vector.
         statement=r"""
 A camera mount reports its orientation as the rotation matrix
 
-$$R = \begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\
-\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\
--\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}.$$
+$$R = <<R_tex>>.$$
 
 Its angles are the intrinsic Z-Y-Z (proper Euler) angles $(\alpha, \beta, \gamma)$:
 $R = R_z(\alpha)\,R_y(\beta)\,R_z(\gamma)$. Like the roll, pitch and yaw of the chapter's §2,
@@ -118,6 +118,21 @@ the 3-vector $(\alpha, \beta, \gamma)$ in radians.
             "beta_only": "negating β alone gives another rotation (rebuild R from your triple "
             "to see it): with sin β < 0 the entries you read α and γ from change sign too.",
         },
+        variants=Variants(
+            "ch05_euler",
+            {
+                "R": [
+                    ["1/2", "sqrt(3)/2", "0"],
+                    ["sqrt(3)/4", "-1/4", "-sqrt(3)/2"],
+                    ["-3/4", "sqrt(3)/4", "-1/2"],
+                ],
+                "R_tex": r"\begin{bmatrix} \tfrac12 & \tfrac{\sqrt3}{2} & 0\\"
+                "\n"
+                r"\tfrac{\sqrt3}{4} & -\tfrac14 & -\tfrac{\sqrt3}{2}\\"
+                "\n"
+                r"-\tfrac34 & \tfrac{\sqrt3}{4} & -\tfrac12\end{bmatrix}",
+            },
+        ),
     ),
     Exercise(
         name="unreachable_omega",
@@ -159,10 +174,9 @@ unit vectors give the one with $n\cdot(1, 1, 1) > 0$. Give a 3-vector.
         level="challenge",
         title="How fast does slerp turn?",
         statement=r"""
-A body moves from the orientation $q_0 = \big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)$
-to $q_1 = \big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},
--\tfrac{\sqrt6}{4}\big)$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$ with the
-duration $T = 3$ s, taking the shorter way as the chapter's slerp does. Its angular velocity is
+In $T = <<T>>$ s, a body moves from the orientation $q_0 = <<q0_tex>>$
+to $q_1 = <<q1_tex>>$ (scalar first) along $\operatorname{slerp}(q_0, q_1, t/T)$,
+taking the shorter way as the chapter's slerp does. Its angular velocity is
 constant. Give it in **world** coordinates, in rad/s: a 3-vector $\omega$ with
 $\dot R = \hat\omega R$.
 """,
@@ -174,12 +188,25 @@ $\dot R = \hat\omega R$.
             "body_frame": "that is the angular velocity in body coordinates, the same vector "
             "seen from the body; the exercise asks for world coordinates.",
             "per_move": "that is the rotation vector of the whole move; the exercise asks "
-            "for a rate in rad/s: the move takes 3 s.",
+            "for a rate in rad/s: the move takes <<T>> s.",
             "half_angle": "the quaternion of the relative turn holds half its angle: "
             "cos(θ/2), not cos θ.",
             "long_way": "that turns the long way round: q₀ · q₁ < 0, so −q₁ is the nearer "
             "quaternion of the same orientation.",
+            "reverse": "that turn goes from q₁ back to q₀: the turn that takes R₀ to R₁, "
+            "written in the world frame, is R₁R₀ᵀ, not its inverse.",
         },
+        variants=Variants(
+            "ch05_slerp",
+            {
+                "T": 3,
+                "q0": [2**0.5 / 2, 2**0.5 / 2, 0.0, 0.0],
+                "q1": [-(2**0.5) / 4, -(2**0.5) / 4, -(6**0.5) / 4, -(6**0.5) / 4],
+                "q0_tex": r"\big(\tfrac{\sqrt2}{2}, \tfrac{\sqrt2}{2}, 0, 0\big)",
+                "q1_tex": r"\big(-\tfrac{\sqrt2}{4}, -\tfrac{\sqrt2}{4}, -\tfrac{\sqrt6}{4},"
+                r" -\tfrac{\sqrt6}{4}\big)",
+            },
+        ),
     ),
     Exercise(
         name="angle_between_quaternions",
@@ -202,6 +229,8 @@ $R_0^TR_1$, in radians. Give a number.
             "give, the statement asks for the one in [0, π].",
             "scalar_last": "q₁ came as a ROS message, scalar last: put it in the order "
             "(w, x, y, z) before computing with it.",
+            "half_angle": "the scalar part of the quaternion that takes one orientation to the "
+            "other is cos(θ/2), not cos θ: the angle is twice its arccos.",
         },
         variants=Variants(
             "ch05_two_sources",

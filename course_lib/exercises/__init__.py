@@ -82,6 +82,7 @@ from ._check import expected_shape_phrase, judge
 from ._identity import how_to_set_id
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants, format_parameter
 from ._reading import Rejected
+from ._store import Fingerprints
 from ._variants import (
     identity_line,
     set_student_id,
@@ -309,7 +310,7 @@ def your_numbers(chapter):
 @lru_cache(maxsize=1)
 def _fingerprints():
     text = resources.files(exercise_bank).joinpath("fingerprints.json").read_text()
-    return json.loads(text)
+    return Fingerprints(json.loads(text))  # the variant rows unpacked on demand (_store)
 
 
 def check(name, answer):

@@ -66,14 +66,15 @@ __all__ = [
 _SALT = "rotations-course/variants/v1"
 
 
-def variant_index(key, count, student=None):
+def variant_index(key, count, student=None, spread=None):
     """The variant (``0 <= index < count``) of the exercise variant key ``key`` for a student.
 
     ``student`` is an id (made a key by :func:`course_key`; the grader passes the key its roster
-    gives) or None
-    for this kernel's :func:`student_id`. An empty id, :data:`EXAMPLE_ID`, or ``count`` 1,
-    gives 0, the default variant. Stable across Python and numpy
-    versions (SHA-256 of the salted, normalised id and the key).
+    gives) or None for this kernel's :func:`student_id`. An empty id, :data:`EXAMPLE_ID`, or
+    ``count`` 1, gives 0, the default variant. Stable across Python and numpy versions (SHA-256
+    of the salted key and the variant key). ``spread``: the key's displacements of the tables
+    (``tools/variant_tables.py --roster`` chooses them so that no two students of a known class
+    share a row; None: the plain hash).
 
     Raises
     ------
@@ -85,15 +86,33 @@ def variant_index(key, count, student=None):
     sid = student_id()[0] if student is None else course_key(student)
     if not sid or sid == EXAMPLE_ID or count == 1:
         return 0
-    digest = hashlib.sha256(f"{_SALT}\x00{sid}\x00{key}".encode()).digest()
-    return int.from_bytes(digest[:8], "big") % count
+    return _row(sid, key, count, spread)
+
+
+def _hashes(sid, key, move=0):
+    """Two 64-bit hashes of a normalised, non-empty id and a key (with ``move``, another
+    draw): the row, and the bucket of the id."""
+    tail = f"\x00{move}" if move else ""
+    digest = hashlib.sha256(f"{_SALT}\x00{sid}\x00{key}{tail}".encode()).digest()
+    return int.from_bytes(digest[:8], "big"), int.from_bytes(digest[8:16], "big")
+
+
+def _row(sid, key, count, spread=None):
+    """The row of :func:`variant_index` for a normalised, non-empty id ``sid``: the hash
+    modulo ``count``; with a ``spread``, the ids of a bucket whose entry is m > 0 draw again
+    with m."""
+    h, bucket = _hashes(sid, key)
+    move = spread[bucket % len(spread)] if spread else 0
+    return (_hashes(sid, key, move)[0] if move else h) % count
 
 
 # --------------------------------------------------------------------------- the variant tables
 
 #: The vetted variants of every variant key, package data of :mod:`course_lib.exercise_bank`,
 #: written by ``tools/variant_tables.py``: ``{"enabled": bool, "keys": {key: [parameters, ...]}}``
-#: with row 0 of each key the exercise's default. Parameters only: no answer, no value of one.
+#: with row 0 of each key the exercise's default, and ``"spread": {key: [displacement, ...]}``
+#: when the instructor spread a class over the rows (``variant_tables.py --roster``).
+#: Parameters only: no answer, no value of one.
 TABLE_FILE = "variants.json"
 
 
@@ -123,7 +142,7 @@ def variant_of(variants, student=None):
     rows = table()["keys"].get(variants.key) if variants_enabled() else None
     if not rows:
         return 0, copy.deepcopy(variants.default)
-    k = variant_index(variants.key, len(rows), student)
+    k = variant_index(variants.key, len(rows), student, table().get("spread", {}).get(variants.key))
     return k, copy.deepcopy(rows[k])
 
 

@@ -46,7 +46,7 @@ def _frame_problems(p):
 
 
 def _lengths(rng):
-    a, b = (int(v) for v in rng.choice(np.arange(2, 8), size=2, replace=False))
+    a, b = (int(v) for v in rng.choice(np.arange(2, 10), size=2, replace=False))
     return {"a": a, "b": b, "m": int(rng.integers((a - b) ** 2 + 1, (a + b) ** 2))}
 
 

@@ -5,9 +5,14 @@ from fractions import Fraction
 
 import numpy as np
 
-from draws.common import apart, signed_permutation
+from draws.common import (
+    apart,
+    fraction_text,
+    integer_quaternion,
+    quaternion_matrix,
+    signed_permutation,
+)
 
-_THIRDS = np.array([[1, 2, 2], [2, 1, -2], [2, -2, 1]])  # 3 R: a rotation with entries k/3
 _MISSING = [(0, 2), (1, 1), (2, 0)]  # where a, b and c stand
 
 
@@ -29,10 +34,13 @@ def _frame_problems(p):
 
 
 def _missing(rng):
-    Q = _THIRDS[rng.permutation(3)][:, rng.permutation(3)] * rng.choice([-1, 1], size=3)
-    if np.linalg.det(Q) < 0:
-        Q = Q * np.array([1, 1, -1])
-    rows = [[str(Fraction(int(e), 3)) for e in row] for row in Q]
+    """A rational rotation from an integer quaternion (entries k/n, n = |q|² <= 33), three of
+    its entries hidden."""
+    while True:
+        M, n = quaternion_matrix(integer_quaternion(rng, largest=4))
+        if n <= 33:
+            break
+    rows = [[fraction_text(Fraction(int(e), n)) for e in row] for row in M]
     for (i, j), name in zip(_MISSING, "abc"):
         rows[i][j] = name
     return {"R": rows}
@@ -57,11 +65,14 @@ def _missing_problems(p):
     if len(found) != 1:
         return [f"{len(found)} completions make it a rotation: the answer must be unique"]
     abc = np.array(found[0])
-    return apart("complete_rotation", {"answer": abc, "abs": np.abs(abc)})
+    out = [] if np.abs(abc).min() > 0.05 else ["a missing entry is 0: its sign is not asked"]
+    return out + apart("complete_rotation", {"answer": abc, "abs": np.abs(abc)})
 
 
 def _mirrors(rng):
-    return {"turn": int(rng.choice([t for t in range(30, 171, 10) if t != 120]))}
+    """A turn of 20.0° to 170.0° in steps of 0.1° (1,500 of them; an integer one as an int)."""
+    tenths = int(rng.integers(200, 1701))
+    return {"turn": tenths // 10 if tenths % 10 == 0 else tenths / 10}
 
 
 def _mirrors_problems(p):

@@ -3,6 +3,7 @@
 import numpy as np
 
 from draws.common import apart, signed_permutation
+from draws.common import unit_axis as _unit_axis
 
 
 def _frames(rng):
@@ -101,7 +102,8 @@ def _camera_problems(p):
     out = []
     if p["axis1"] == p["axis2"]:
         out.append("the first two turns share their axis: world and own axis are the same")
-    matrices = {"answer": R3 @ R1 @ R2, "all_body": R1 @ R2 @ R3, "all_world": R3 @ R2 @ R1}
+    matrices = {"answer": R3 @ R1 @ R2, "all_body": R1 @ R2 @ R3, "all_world": R3 @ R2 @ R1,
+                "swapped": R2 @ R1 @ R3}  # fmt: skip
     names = list(matrices)
     for i, a in enumerate(names):
         for b in names[i + 1 :]:
@@ -110,23 +112,12 @@ def _camera_problems(p):
     return out
 
 
-#: Integer vectors of integer length (Pythagorean quadruples), no entry 0: unit axes q / n that
-#: a first-year can work with by hand and that lie along no coordinate axis or plane.
-_QUADRUPLES = [((1, 2, 2), 3), ((2, 3, 6), 7), ((1, 4, 8), 9), ((4, 4, 7), 9), ((2, 6, 9), 11),
-               ((6, 6, 7), 11), ((3, 4, 12), 13), ((2, 5, 14), 15), ((2, 10, 11), 15)]  # fmt: skip
 #: Angles of 4.4 with a trace and 2 sin θ a first-year writes exactly: (tr R, its LaTeX,
 #: 2 sin θ and the LaTeX of its root). θ = π/2 is left out: there 2 sin θ = 2 and the two known
 #: mistakes (no division by 2 sin θ; no factor 2) give the same vector.
 _AXIS_ANGLES = [(2.0, "2", 3**0.5, r"\sqrt3"), (0.0, "0", 3**0.5, r"\sqrt3"),
                 (1 + 2**0.5, r"1 + \sqrt2", 2**0.5, r"\sqrt2"),
                 (1 - 2**0.5, r"1 - \sqrt2", 2**0.5, r"\sqrt2")]  # fmt: skip
-
-
-def _unit_axis(rng):
-    """A random signed, permuted quadruple: ``(q, n)`` with ``q / n`` a unit vector."""
-    q, n = _QUADRUPLES[rng.integers(len(_QUADRUPLES))]
-    q = np.array(q)[rng.permutation(3)] * rng.choice([-1, 1], size=3)
-    return q.tolist(), n
 
 
 def _hat(q):
@@ -155,7 +146,7 @@ def _axis_problems(p):
         out.append("the trace and the skew part belong to no rotation")
     if np.abs(w).min() < 0.05:
         out.append("the axis lies along a coordinate plane or axis")
-    values = {"answer": w, "unnormalized": 2 * sin * w, "no_two": 2 * w}
+    values = {"answer": w, "unnormalized": 2 * sin * w, "no_two": 2 * w, "sign": -w}
     out += apart("axis_of_rotation", values)
     return out
 

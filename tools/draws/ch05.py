@@ -1,22 +1,27 @@
 """The variant draws of chapter 5 (tools/variant_draws.py says what a draw is)."""
 
+from fractions import Fraction
+
 import numpy as np
 
 from course_lib import quaternion
-from draws.common import apart
+from draws.common import (
+    apart,
+    integer_quaternion,
+    quaternion_matrix,
+    rational_unit_quaternions,
+    unit_axis,
+)
 
-#: Directions of integer length, no entry 0 (Pythagorean quadruples): axes along no coordinate
-#: axis or plane, whose unit vector a first-year writes exactly.
-_DIRECTIONS = [(1, 2, 2), (2, 3, 6), (1, 4, 8), (4, 4, 7), (2, 6, 9), (6, 6, 7), (3, 4, 12)]
-#: Unit pairs (c, s) with two or three decimals: c² + s² = 1 exactly.
-_PAIRS = [(0.6, 0.8), (0.8, 0.6), (0.28, 0.96), (0.96, 0.28), (0.352, 0.936), (0.936, 0.352)]
 _AXES = {"x": [1, 0, 0], "y": [0, 1, 0], "z": [0, 0, 1]}
 
 
 def _turn(rng):
-    d = np.array(_DIRECTIONS[rng.integers(len(_DIRECTIONS))])
-    d = d[rng.permutation(3)] * rng.choice([-1, 1], size=3)
-    return {"angle": int(rng.choice([45, 60, 90, 120, 135])), "direction": d.tolist()}
+    """An angle of the special families and a direction of integer length (a Pythagorean
+    quadruple: an axis along no coordinate axis or plane)."""
+    d, _ = unit_axis(rng)
+    angle = int(rng.choice([30, 45, 60, 72, 90, 108, 120, 135, 144, 150]))
+    return {"angle": angle, "direction": d}
 
 
 def _turn_problems(p):
@@ -28,32 +33,39 @@ def _turn_problems(p):
     q = np.r_[np.cos(half), np.sin(half) * axis]
     values = {"answer": q, "full_angle": np.r_[np.cos(2 * half), np.sin(2 * half) * axis],
               "not_unit": np.r_[np.cos(half), np.sin(half) * d], "scalar_last": np.r_[q[1:], q[0]],
-              "negated": -q}  # fmt: skip
+              "negated": -q,
+              "degrees": np.r_[np.cos(p["angle"] / 2), np.sin(p["angle"] / 2) * axis]}  # fmt: skip
     return out + apart("quaternion_of_turn", values)
 
 
+def _decimal_quaternion(rng):
+    """A unit quaternion (w, x, y, z) with entries of at most two decimals: an integer
+    quadruple of length n = 10 or 25, divided by n."""
+    n = int(rng.choice([10, 25]))
+    table = rational_unit_quaternions(n)
+    return [round(v / n, 2) for v in table[rng.integers(len(table))]]
+
+
 def _ros(rng):
-    w, s = _PAIRS[rng.integers(len(_PAIRS))]
-    axis = str(rng.choice(list(_AXES)))
-    vec = [s * e for e in _AXES[axis]]
-    return {"x": vec[0], "y": vec[1], "z": vec[2], "w": w, "axis": axis}
+    w, x, y, z = _decimal_quaternion(rng)
+    return {"x": x, "y": y, "z": z, "w": abs(w)}
 
 
 def _ros_problems(p):
     v = np.array([p["x"], p["y"], p["z"]])
     out = []
-    if abs(v @ v + p["w"] ** 2 - 1) > 1e-12 or np.count_nonzero(v) != 1:
-        out.append("not a unit quaternion of a turn about one coordinate axis")
-    elif v @ np.array(_AXES[p["axis"]]) <= 0:
-        out.append("the statement's axis is not the quaternion's (or the angle is not in [0, π])")
+    if abs(v @ v + p["w"] ** 2 - 1) > 1e-12 or p["w"] < 0:
+        out.append("not a unit quaternion with w ≥ 0 (the angle would not be in [0, π])")
     angle = 2 * np.arctan2(np.linalg.norm(v), p["w"])
+    if not 0.3 < angle < np.pi - 0.3:
+        out.append("the angle is near 0 or π")
     values = {"answer": angle, "scalar_first": 2 * np.arccos(p["x"]), "half": angle / 2}
     return out + apart("angle_from_ros", values)
 
 
 def _two_turns(rng):
     first, second = rng.choice(list(_AXES), size=2, replace=False)
-    a1, a2 = rng.choice([60, 90, 120], size=2)
+    a1, a2 = rng.choice(np.arange(10, 171, 5), size=2)
     return {"a1": int(a1), "axis1": str(first), "a2": int(a2), "axis2": str(second)}
 
 
@@ -69,14 +81,25 @@ def _two_turns_problems(p):
 
 
 def _gimbal(rng):
-    return {"roll": int(rng.choice([r for r in range(-165, 180, 15) if r % 90]))}
+    """A roll of −179.9° to 179.9° in steps of 0.1° (an integer one as an int)."""
+    tenths = int(rng.integers(-1799, 1800))
+    return {"roll": tenths // 10 if tenths % 10 == 0 else tenths / 10}
+
+
+def _sympy_size(degrees):
+    """How many nodes sympy's exact cos and sin of ``degrees`` have (the solution is exact)."""
+    import sympy as sp
+
+    phi = sp.pi * sp.Rational(str(degrees)) / 180
+    return max(len(list(sp.preorder_traversal(f(phi)))) for f in (sp.cos, sp.sin))
 
 
 def _gimbal_problems(p):
     phi = np.radians(p["roll"])
-    out = (
-        [] if p["roll"] % 90 else ["roll 0 or a multiple of 90°: a column along a coordinate axis"]
-    )
+    near = abs((p["roll"] + 45) % 90 - 45)  # degrees from the nearest multiple of 90°
+    out = [] if near >= 5 else ["roll within 5° of a multiple of 90°: a column near an axis"]
+    if _sympy_size(p["roll"]) > 40:  # e.g. 25.5°: the reader refuses the exact answer
+        out.append("sympy writes cos and sin of this roll as long nested radicals")
     # the body-frame columns at pitch 90°: roll e_x, pitch R_x(φ)ᵀ e_y; their normal n
     roll_col, pitch_col = np.array([1.0, 0, 0]), np.array([0, np.cos(phi), -np.sin(phi)])
     n = np.cross(roll_col, pitch_col)
@@ -90,17 +113,8 @@ def _gimbal_problems(p):
     return out + apart("unreachable_omega", values)
 
 
-def _unit_quaternion(rng):
-    """A unit quaternion with two non-zero decimal entries (c, s) and two zeros."""
-    c, s = _PAIRS[rng.integers(len(_PAIRS))]
-    q = np.zeros(4)
-    i, j = rng.choice(4, size=2, replace=False)
-    q[i], q[j] = c * rng.choice([-1, 1]), s * rng.choice([-1, 1])
-    return q
-
-
 def _two_sources(rng):
-    q0, q1 = _unit_quaternion(rng), _unit_quaternion(rng)
+    q0, q1 = np.array(_decimal_quaternion(rng)), np.array(_decimal_quaternion(rng))
     x, y, z, w = (float(v) for v in (q1[1], q1[2], q1[3], q1[0]))
     return {"q0": q0.tolist(), "x": x, "y": y, "z": z, "w": w}
 
@@ -114,9 +128,107 @@ def _two_sources_problems(p):
         out.append("q₀ · q₁ is not clearly negative: the double cover would not matter")
     if abs(dot) > 0.95:
         out.append("the two orientations are nearly the same")
-    values = {"answer": 2 * np.arccos(abs(dot)), "long_way": 2 * np.arccos(np.clip(dot, -1, 1)),
-              "scalar_last": 2 * np.arccos(abs(q0 @ np.r_[q1[1:], q1[0]]))}  # fmt: skip
+    acos = lambda c: np.arccos(np.clip(c, -1, 1))  # noqa: E731
+    values = {"answer": 2 * acos(abs(dot)), "long_way": 2 * acos(dot),
+              "scalar_last": 2 * acos(abs(q0 @ np.r_[q1[1:], q1[0]])),
+              "half_angle": acos(abs(dot))}  # fmt: skip
     return out + apart("angle_between_quaternions", values)
+
+
+def _fraction_tex(f):
+    """An exact rational as LaTeX: ``-\\tfrac{2}{9}``, ``0``, ``1``."""
+    if f.denominator == 1:
+        return str(f.numerator)
+    return ("-" if f < 0 else "") + rf"\tfrac{{{abs(f.numerator)}}}{{{f.denominator}}}"
+
+
+def _matrix_tex(rows):
+    body = r"\\ ".join(" & ".join(_fraction_tex(f) for f in row) for row in rows)
+    return rf"\begin{{bmatrix}} {body} \end{{bmatrix}}"
+
+
+def _euler(rng):
+    """A rational rotation R = M / n from an integer quaternion (n = |q|² <= 36): its exact
+    entries for the solution, its LaTeX for the statement."""
+    while True:
+        M, n = quaternion_matrix(integer_quaternion(rng, largest=4))
+        if n <= 36:
+            break
+    rows = [[Fraction(int(e), n) for e in row] for row in M]
+    return {"R_tex": _matrix_tex(rows), "R": [[str(f) for f in row] for row in rows]}
+
+
+def euler_values(R):
+    """The answer and the known mistakes of 5.4 for the rotation ``R`` (floats), as the
+    reference solution and MISTAKES compute them."""
+    alpha, gamma = np.arctan2(-R[1, 2], -R[0, 2]), np.arctan2(-R[2, 1], R[2, 0])
+    beta = -np.arctan2(np.hypot(R[0, 2], R[1, 2]), R[2, 2])
+    a_pos, g_pos = np.arctan2(R[1, 2], R[0, 2]), np.arctan2(R[2, 1], -R[2, 0])
+    return {"answer": [alpha, beta, gamma], "reversed": [gamma, beta, alpha],
+            "gamma_sign": [alpha, beta, np.arctan2(-R[2, 1], -R[2, 0])],
+            "positive_beta": [a_pos, -beta, g_pos], "beta_only": [a_pos, beta, g_pos]}  # fmt: skip
+
+
+def _euler_problems(p):
+    R = np.array([[float(Fraction(e)) if "sqrt" not in e else _surd(e) for e in row]
+                  for row in p["R"]])  # fmt: skip
+    out = []
+    if np.abs(R.T @ R - np.eye(3)).max() > 1e-12 or np.linalg.det(R) < 0:
+        out.append("R is not a rotation")
+    if abs(R[2, 2]) > 0.9:
+        out.append("sin β near 0: near the gimbal case, the angles are ill-conditioned")
+    values = euler_values(R)
+    if (
+        np.abs(np.abs(values["answer"]) - np.pi).min() < 0.05
+        or min(abs(values["answer"][0]), abs(values["answer"][2])) < 0.05
+    ):
+        out.append("α or γ near 0 or ±π: the range's edge")
+    return out + apart("proper_euler_angles", values)
+
+
+def _surd(text):
+    import sympy as sp
+
+    return float(sp.sympify(text))
+
+
+def _slerp(rng):
+    """Two unit quaternions with rational entries (integer quadruples of length n <= 9) whose
+    dot product is negative (the statement's shorter way matters), and a duration."""
+    n0, n1 = (int(v) for v in rng.choice([3, 5, 6, 7, 9], size=2))
+    t0, t1 = rational_unit_quaternions(n0), rational_unit_quaternions(n1)
+    q0 = [Fraction(v, n0) for v in t0[rng.integers(len(t0))]]
+    q1 = [Fraction(v, n1) for v in t1[rng.integers(len(t1))]]
+    tex = lambda q: r"\big(" + ", ".join(_fraction_tex(f) for f in q) + r"\big)"  # noqa: E731
+    return {"q0_tex": tex(q0), "q1_tex": tex(q1), "T": int(rng.integers(2, 7)),
+            "q0": [float(f) for f in q0], "q1": [float(f) for f in q1]}  # fmt: skip
+
+
+def slerp_values(q0, q1, T):
+    """The answer and the known mistakes of 5.6 (world angular velocity of the slerp)."""
+    from course_lib import so3
+
+    R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
+    omega = so3.log(R1 @ R0.T)
+    q = quaternion.multiply(q1, quaternion.conjugate(q0))
+    with np.errstate(invalid="ignore", divide="ignore"):  # q₀ = ±q₁: rejected by the dot
+        long_way = q[1:] / np.linalg.norm(q[1:]) * 2 * np.arccos(np.clip(q[0], -1, 1)) / T
+    return {"answer": omega / T, "body_frame": so3.log(R0.T @ R1) / T, "per_move": omega,
+            "half_angle": omega / T / 2, "long_way": long_way,
+            "reverse": so3.log(R0 @ R1.T) / T}  # fmt: skip
+
+
+def _slerp_problems(p):
+    q0, q1 = np.array(p["q0"]), np.array(p["q1"])
+    out = []
+    if abs(q0 @ q0 - 1) > 1e-12 or abs(q1 @ q1 - 1) > 1e-12:
+        out.append("not unit quaternions")
+    dot = float(q0 @ q1)
+    if not -0.9 < dot < -0.1:
+        out.append("q₀ · q₁ not clearly negative, or the two orientations nearly the same")
+    if p["T"] < 2:
+        out.append("T = 1: the rate and the rotation vector of the move are the same")
+    return out + apart("slerp_angular_velocity", slerp_values(q0, q1, p["T"]))
 
 
 DRAWS = {
@@ -125,4 +237,6 @@ DRAWS = {
     "ch05_two_turns": (_two_turns, _two_turns_problems),
     "ch05_gimbal": (_gimbal, _gimbal_problems),
     "ch05_two_sources": (_two_sources, _two_sources_problems),
+    "ch05_euler": (_euler, _euler_problems),
+    "ch05_slerp": (_slerp, _slerp_problems),
 }

@@ -38,7 +38,8 @@ n1, n2 = sp.Matrix([1, 0, 0]), sp.Matrix([sp.cos(psi), sp.sin(psi), 0])
 M1, M2 = sp.eye(3) - 2 * n1 * n1.T, sp.eye(3) - 2 * n2 * n2.T
 turn = (M2 * M1).applyfunc(sp.trigsimp)  # = R_z(2ψ): first column (cos 2ψ, sin 2ψ, 0)
 assert (turn - sp.rot_ccw_axis3(2 * psi)).applyfunc(sp.trigsimp) == sp.zeros(3, 3)
-answer_two_mirrors = sp.pi * P["turn"] / 180 / 2  # 2ψ = the turn""",
+degrees = sp.Rational(str(P["turn"]))  # the turn in degrees, exact (a decimal: 47.3)
+answer_two_mirrors = sp.pi * degrees / 180 / 2  # 2ψ = the turn""",
 }
 
 MISTAKES = {
@@ -56,7 +57,7 @@ MISTAKES = {
     "inverse_of_product": {"order": "A.T * B", "forward": "A * B.T", "bc": "B.T * A.T"},
     "rigid_inverse": {"minus_d": "-d", "no_transpose": "-R * d"},
     "two_mirrors": {
-        "double": "sp.pi * P['turn'] / 180",
-        "order": "sp.pi - sp.pi * P['turn'] / 180 / 2",
+        "double": "sp.pi * degrees / 180",
+        "order": "sp.pi - sp.pi * degrees / 180 / 2",
     },
 }

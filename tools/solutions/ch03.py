@@ -57,6 +57,7 @@ MISTAKES = {
     "ode_shifted": {
         "interval": "[sp.log(ratio) / t2, x1 * ratio ** sp.Rational(-t1, t2)]",
         "at_zero": "[rate_value, x1]",
+        "no_division": "[sp.log(ratio), x1 * ratio ** (-t1)]",
     },
     "pendulum_speed": {
         "angle": "r_len * angle.subs(tau, at)",

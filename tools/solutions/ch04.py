@@ -79,8 +79,13 @@ MISTAKES = {
     "axis_of_rotation": {
         "unnormalized": "np.array([skew[2, 1], skew[0, 2], skew[1, 0]])",
         "no_two": "2 * answer_axis_of_rotation",
+        "sign": "-answer_axis_of_rotation",
     },
-    "fixed_vs_body": {"all_body": "R1 @ R2 @ R3", "all_world": "R3 @ R2 @ R1"},
+    "fixed_vs_body": {
+        "all_body": "R1 @ R2 @ R3",
+        "all_world": "R3 @ R2 @ R1",
+        "swapped": "R2 @ R1 @ R3",
+    },
     "composed_angle": {
         "no_minus_one": "(Rx * Rz).trace() / 2",
         "sum": "sp.cos(alpha + beta)",

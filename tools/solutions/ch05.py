@@ -18,21 +18,15 @@ q_1 = quaternion.from_axis_angle(axes[P["axis1"]], np.radians(P["a1"]))  # the f
 q_2 = quaternion.from_axis_angle(axes[P["axis2"]], np.radians(P["a2"]))
 answer_compose_quaternions = quaternion.multiply(q_2, q_1)  # world axes: from the left""",
     "proper_euler_angles": """\
-R = sp.Matrix(
-    [
-        [sp.Rational(1, 2), sp.sqrt(3) / 2, 0],
-        [sp.sqrt(3) / 4, -sp.Rational(1, 4), -sp.sqrt(3) / 2],
-        [-sp.Rational(3, 4), sp.sqrt(3) / 4, -sp.Rational(1, 2)],
-    ]
-)
+R = sp.Matrix(P["R"])  # the exact entries (strings such as "sqrt(3)/4" or "-2/9")
 # R_z(α) R_y(β) R_z(γ): third column (cα sβ, sα sβ, cβ), third row (−sβ cγ, sβ sγ, cβ);
 # with sin β < 0 the entries divided by sin β change sign
 alpha = sp.atan2(-R[1, 2], -R[0, 2])
 beta = -sp.atan2(sp.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
 gamma = sp.atan2(-R[2, 1], R[2, 0])
-answer_proper_euler_angles = [alpha, beta, gamma]  # (π/2, −2π/3, −5π/6)""",
+answer_proper_euler_angles = [alpha, beta, gamma]  # the default: (π/2, −2π/3, −5π/6)""",
     "unreachable_omega": """\
-phi = sp.pi * P["roll"] / 180  # pitch 90°, yaw 0
+phi = sp.pi * sp.Rational(str(P["roll"])) / 180  # pitch 90°, yaw 0
 Rx = sp.Matrix([[1, 0, 0], [0, sp.cos(phi), -sp.sin(phi)], [0, sp.sin(phi), sp.cos(phi)]])
 Ry = sp.Matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]])  # R_y(90°)
 e_x, e_y, e_z = (sp.eye(3)[:, k] for k in range(3))  # the coordinate axes
@@ -41,11 +35,10 @@ n = roll_col.cross(pitch_col)
 n = n * sp.sign(sum(n))  # of the two normals, the one with n · (1, 1, 1) > 0
 answer_unreachable_omega = list(n / n.norm())""",
     "slerp_angular_velocity": """\
-q0 = np.array([np.sqrt(2) / 2, np.sqrt(2) / 2, 0, 0])
-q1 = np.array([-np.sqrt(2) / 4, -np.sqrt(2) / 4, -np.sqrt(6) / 4, -np.sqrt(6) / 4])
+q0, q1 = np.array(P["q0"]), np.array(P["q1"])  # scalar first
 R0, R1 = quaternion.to_matrix(q0), quaternion.to_matrix(q1)
-T = 3.0
-answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world: (0, 0, 2π/9)""",
+T = P["T"]  # seconds
+answer_slerp_angular_velocity = so3.log(R1 @ R0.T) / T  # world (the default: (0, 0, 2π/9))""",
     "angle_between_quaternions": """\
 q0 = np.array(P["q0"])
 x, y, z, w = P["x"], P["y"], P["z"], P["w"]  # the ROS message, scalar last
@@ -59,6 +52,7 @@ MISTAKES = {
         "not_unit": "[sp.cos(half), *(sp.sin(half) * direction)]",
         "scalar_last": "[*(sp.sin(half) * axis), sp.cos(half)]",
         "negated": "[-sp.cos(half), *(-sp.sin(half) * axis)]",
+        "degrees": "[sp.cos(P['angle'] / 2), *(sp.sin(P['angle'] / 2) * axis)]",
     },
     "angle_from_ros": {
         "scalar_first": "2 * np.arccos(x)",
@@ -86,9 +80,11 @@ MISTAKES = {
         "half_angle": "so3.log(R1 @ R0.T) / T / 2",
         "long_way": "(lambda q: q[1:] / np.linalg.norm(q[1:]) * 2 * np.arccos(q[0]) / T)("
         "quaternion.multiply(q1, quaternion.conjugate(q0)))",
+        "reverse": "so3.log(R0 @ R1.T) / T",
     },
     "angle_between_quaternions": {
         "long_way": "2 * np.arccos(q0 @ q1)",
         "scalar_last": "2 * np.arccos(abs(q0 @ np.array([x, y, z, w])))",
+        "half_angle": "np.arccos(abs(q0 @ q1))",
     },
 }

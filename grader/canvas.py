@@ -62,6 +62,7 @@ class Export:
     unknown: list = field(default_factory=list)  # nbgrader ids no roster row matches
     identity: list = field(default_factory=list)  # rows of the course's identity report
     missing_as: str = "blank"  # issue 34: a missing submission's cell, "blank" or "zero"
+    twice: list = field(default_factory=list)  # (roster row's name, [nbgrader ids]) left out
 
     def report(self):
         """The lines of the report: every missing submission and unknown student."""
@@ -78,6 +79,12 @@ class Export:
             + (f"; the notebook showed others in {r['other_numbers']}" * bool(r["other_numbers"]))
             + (f"; points lost there: {r['lost']} (regrade?)" * bool(r["lost"]))
             for r in self.identity
+        ]
+        lines += [
+            f"matched twice: the roster row of {who} matches the nbgrader students "
+            f"{', '.join(sids)}; left out (no score written): grade one id per student, or fix "
+            "the roster"
+            for who, sids in self.twice
         ]
         return lines
 
@@ -157,6 +164,7 @@ def export(course, assignments=None, roster=None, missing="blank"):
             )
             people.append((ident, student.id))
         if rows is not None:
+            people = _once(people, out)
             taken = {tuple(ident) for ident, _ in people}
             people += [
                 ([r.get(c, "") for c in IDENTITY], None)
@@ -174,6 +182,17 @@ def export(course, assignments=None, roster=None, missing="blank"):
     out.identity = [r for r in flagged if r.get("assignment") in names]
     out.missing_as = missing
     return out
+
+
+def _once(people, out):
+    """``people`` without the roster rows that two or more nbgrader students matched (two
+    rows of one Canvas student: which score Canvas keeps would depend on its import order);
+    those are listed in ``out.twice``."""
+    by_row = {}
+    for ident, sid in people:
+        by_row.setdefault(tuple(ident), []).append(sid)
+    out.twice += [(ident[0], sids) for ident, sids in by_row.items() if len(sids) > 1]
+    return [(ident, sid) for ident, sid in people if len(by_row[tuple(ident)]) == 1]
 
 
 def write_csv(result, path):

@@ -312,11 +312,13 @@ def _identity_data(course, ps, student):
     """The row of the course's identity report for this submission, or the plain key."""
     import csv
 
+    from grader.csv_safe import neutralise
+
     report = course / "identity-report.csv"
     if report.is_file():
         with open(report, newline="", encoding="utf-8") as f:
             for row in csv.DictReader(f):
-                if (row["assignment"], row["student"]) == (ps, student):
+                if (row["assignment"], row["student"]) == (neutralise(ps), neutralise(student)):
                     return row
     return {"assignment": ps, "student": student}
 

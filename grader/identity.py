@@ -207,21 +207,19 @@ def write_report(path, assignment, student, row):
 
 
 def _rewrite(path, assignment, student, row):
+    """The report's rows, every cell formula-safe (:mod:`grader.csv_safe`: ``shown_as`` comes
+    from the student's own record), as they are stored and matched."""
+    from grader.csv_safe import neutralise
+
     rows = []
+    this = (neutralise(assignment), neutralise(student))
     if path.is_file():
         with open(path, newline="", encoding="utf-8") as f:
-            rows = [
-                r
-                for r in csv.DictReader(f)
-                if (r["assignment"], r["student"]) != (assignment, student)
-            ]
+            rows = [r for r in csv.DictReader(f) if (r["assignment"], r["student"]) != this]
     if row is not None:
-        rows.append(
-            {
-                **{c: row.get(c, "") for c in REPORT_COLUMNS},
-                **dict(zip(REPORT_COLUMNS, (assignment, student))),
-            }
-        )
+        new = {c: row.get(c, "") for c in REPORT_COLUMNS}
+        new.update(zip(REPORT_COLUMNS, (assignment, student)))
+        rows.append({c: neutralise(v) for c, v in new.items()})
     if not rows and not path.is_file():
         return
     tmp = path.with_name(path.name + ".tmp")

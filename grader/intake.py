@@ -169,6 +169,11 @@ def parse(data, name):
     """The notebook (a dict) in ``data``, or :class:`Refused` saying why it is not one."""
     try:
         nb = json.loads(data.decode("utf-8"))
+    except (RecursionError, MemoryError) as err:  # nested past what the parser can hold
+        raise Refused(
+            f"{shown(name)} is JSON nested too deep to be a notebook ({type(err).__name__}): "
+            "hand in the .ipynb file that Jupyter saved"
+        ) from None
     except (UnicodeDecodeError, ValueError) as err:
         raise Refused(
             f"{shown(name)} is not a readable notebook ({type(err).__name__}: not "

@@ -39,7 +39,14 @@ from nbconvert.exporters import HTMLExporter
 from nbconvert.filters.markdown_mistune import IPythonRenderer, MarkdownWithMath
 from nbgrader.preprocessors import NbGraderPreprocessor
 
-__all__ = ["FeedbackExporter", "InertStudentHTML", "SCHEMES", "clean_html", "safe_markdown2html"]
+__all__ = [
+    "FeedbackExporter",
+    "InertStudentHTML",
+    "SCHEMES",
+    "clean_html",
+    "inert_output_metadata",
+    "safe_markdown2html",
+]
 
 _SCHEME = re.compile(r"(?i)\b(javascript|vbscript|data)\s*:")
 #: The only URL schemes a link or a source of rendered markdown may have (else an in-page anchor).
@@ -125,12 +132,45 @@ def safe_markdown2html(context, source):
     return clean_html(MarkdownWithMath(renderer=renderer).render(source))
 
 
+#: Output metadata the templates write into a tag's attributes, unquoted: only a plain number.
+_SIZE = re.compile(r"\d{1,5}(\.\d{1,3})?\Z")
+
+
+def inert_output_metadata(output):
+    """An output's metadata as the page may use it: ``width`` and ``height`` of an image only
+    when they are plain numbers (nbconvert's templates write them into the ``<img>`` tag without
+    quotes, so ``"1 onerror=..."`` became a handler), and no ``filenames`` (which nbconvert
+    takes as the image's ``src``: any URL).
+
+    Examples
+    --------
+    >>> out = {"metadata": {"image/png": {"width": "1 onerror=go()", "height": 40},
+    ...        "filenames": {"image/png": "https://x.example/a.png"}}}
+    >>> inert_output_metadata(out)["metadata"]
+    {'image/png': {'height': 40}}
+    """
+    meta = output.get("metadata")
+    if not isinstance(meta, dict):
+        return output
+    meta.pop("filenames", None)
+    for value in meta.values():
+        if isinstance(value, dict):
+            for key in ("width", "height"):
+                if key in value and not _SIZE.match(str(value[key])):
+                    del value[key]
+    return output
+
+
 class InertStudentHTML(NbGraderPreprocessor):
     """Autograde: in every cell the student could write (not locked by the release), markdown
-    HTML becomes text and a raw cell loses the format that would pass it to the page as HTML.
+    HTML becomes text and a raw cell loses the format that would pass it to the page as HTML;
+    in every code cell, locked or not (its outputs are the student's kernel's), the output
+    metadata the templates put into tags is made inert (:func:`inert_output_metadata`).
     Locked cells were put back from the release by ``OverwriteCells`` before this runs."""
 
     def preprocess_cell(self, cell, resources, index):
+        for output in cell.get("outputs", []) if cell.cell_type == "code" else []:
+            inert_output_metadata(output)
         nbgrader = cell.get("metadata", {}).get("nbgrader")
         if isinstance(nbgrader, dict) and nbgrader.get("locked") is True:
             return cell, resources

@@ -71,7 +71,7 @@ __all__ = [
 KERNEL_ID = 60500
 SLOTS = 16
 #: World-writable folders where the kernel's uid may leave files: emptied of them after it.
-SHARED_TMP = ("/tmp", "/var/tmp", "/dev/shm")
+SHARED_TMP = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock")
 #: Where the slot locks live (root only); the first that can be made.
 LOCK_DIRS = ("/run/rotations-grader", os.path.join(tempfile.gettempdir(), "rotations-grader"))
 #: Modules the kernel imports: they must be found and readable as the kernel's uid.

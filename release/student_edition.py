@@ -37,7 +37,8 @@ from course_lib.student import student_notebook  # noqa: E402
 
 NOTEBOOK_DIRS = ("notebooks", "problem_sets")
 INSTRUCTOR_MODULES = ("student.py",)  # course_lib modules students do not get
-TEST_TOOLS = ("pytest", "hypothesis", "nbval", "scipy")  # requirements-test.txt, same pins
+# requirements-test.txt, the instructor's pins; pytest-xdist (and its execnet): two workers
+TEST_TOOLS = ("pytest", "hypothesis", "nbval", "scipy", "pytest-xdist", "execnet")
 # A test file that matches is left out, for the reason in the group's name.
 INSTRUCTOR_TEST = re.compile(
     r"(?P<tool>\bnbgrader\b|\bgrader\b|playwright|\bruff\b|\btools\b|\be2e\b|\"site\""

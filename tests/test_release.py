@@ -126,6 +126,7 @@ def test_the_edition_holds_no_instructor_tool_and_no_answer_test(built):
         assert (student / name).is_file(), name
     pins = (student / "requirements-test.txt").read_text()
     assert "nbgrader" not in pins and "pytest==" in pins and "nbval==" in pins
+    assert "pytest-xdist==" in pins and "execnet==" in pins  # the Makefile's two workers
     assert "nbgrader==" not in (student / "environment-student.txt").read_text()
 
 

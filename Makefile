@@ -187,10 +187,12 @@ test-gradescope: $(STAMP)
 	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q
 
 # What is too slow for `make test` (docs/testing.md), on two workers: the rest of the attacks on
-# grading through real nbgrader and the Gradescope autograder in a temporary /autograder.
+# grading through real nbgrader and the Gradescope autograder in a temporary /autograder. Test by
+# test (--dist loadgroup), not file by file: one file's run_autograder tests were half the run;
+# the privilege-drop tests stay together in one worker (their xdist_group).
 .PHONY: test-slow
 test-slow: $(STAMP)
-	$(BIN)/python -m pytest -n $(JOBS) --dist loadfile -q \
+	$(BIN)/python -m pytest -n $(JOBS) --dist loadgroup -q \
 		-m "slow_grading or gradescope or slow_variants" \
 		tests/test_grading_nbgrader.py tests/test_grading_gradescope.py tests/test_variant_tables.py \
 		tests/test_grading_variants_nbgrader.py tests/test_grading_identity.py \

@@ -31,7 +31,9 @@ from docker_seccomp import command  # noqa: E402
 
 from grader import privdrop, sandbox  # noqa: E402
 
-pytestmark = pytest.mark.privdrop
+# One worker runs this file (make test-slow's --dist loadgroup): the tests count every process
+# of the kernels' uids, which a second worker's privdrop kernel would be.
+pytestmark = [pytest.mark.privdrop, pytest.mark.xdist_group("privdrop")]
 MARKER = "ROTATIONS_GRADER_SECRET_41d9"
 
 

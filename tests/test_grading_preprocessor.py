@@ -259,3 +259,24 @@ def test_output_messages_are_capped_as_they_arrive_and_the_first_errors_kept():
     errors = [o for o in cell.outputs if o.output_type == "error"]
     assert len(errors) == 1 and len(errors[0].evalue) <= 2_000
     assert ex._cut > 80_000
+
+
+def test_the_kernel_is_killed_after_the_last_cell_with_every_output_kept_issue36(monkeypatch):
+    """A graceful stop (a shutdown request, then the kernel's own teardown) cost about 0.35 s of
+    CPU and 0.6 s of waiting per submission (issue 36): the kernel is now killed once the last
+    cell is done, and every output of every cell, the last one's too, is kept whole."""
+    stops = []
+    original = P.ConfinedKernelManager.shutdown_kernel
+
+    async def shutdown(self, now=False, restart=False):
+        await original(self, now=now, restart=restart)
+        stops.append((now, await self.is_alive()))
+
+    monkeypatch.setattr(P.ConfinedKernelManager, "shutdown_kernel", shutdown)
+    many = nbformat.v4.new_code_cell("for i in range(3000):\n    print(i)")
+    last = nbformat.v4.new_code_cell("import atexit\natexit.register(print, 'bye')\nprint('last')")
+    nb = _confined_run([many, last], timeout=60)
+    text = "".join(o.text for o in nb.cells[0].outputs if o.output_type == "stream")
+    assert text == "".join(f"{i}\n" for i in range(3000))
+    assert "".join(o.text for o in nb.cells[1].outputs) == "last\n"
+    assert stops == [(True, False)]  # killed, and gone

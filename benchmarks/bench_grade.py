@@ -19,7 +19,8 @@ kernel's start, its cells, its stop), from two probes (an nbgrader process that 
 confined kernels started and stopped as :class:`grader.preprocessor.ConfinedExecute` does);
 then the projection for 200 students x 5 problem sets on 2 cores.
 
-    python -m benchmarks.bench_grade [--students 20] [--jobs 2] [--per-student] [--keep DIR]
+    python -m benchmarks.bench_grade [--students 20] [--jobs 2] [--per-student]
+        [--shutdown immediate|graceful] [--keep DIR]
 """
 
 from __future__ import annotations
@@ -117,12 +118,19 @@ def _cgroup_base():
         else:
             continue
         probe = base / f"bench-grade-{os.getpid()}-probe"
-        try:
+        try:  # can a process of ours move into a cgroup made here?
             probe.mkdir()
-            probe.rmdir()
         except OSError:
             continue
-        return base, reader
+        join = "import os, sys; open(sys.argv[1], 'w').write(str(os.getpid()))"
+        done = subprocess.run(
+            [sys.executable, "-c", join, str(probe / "cgroup.procs")], capture_output=True
+        )
+        time.sleep(0.1)
+        with contextlib.suppress(OSError):
+            probe.rmdir()
+        if done.returncode == 0:
+            return base, reader
     return None
 
 
@@ -187,7 +195,8 @@ def measured(argv, folder):
     while Path(cgroup, "cgroup.procs").read_text().strip() and time.monotonic() < deadline:
         time.sleep(0.05)
     tree = CGROUP[1](cgroup)
-    cgroup.rmdir()
+    with contextlib.suppress(OSError):  # a process still in it (it was counted)
+        cgroup.rmdir()
     return proc.returncode, text, wall, tree, own
 
 
@@ -286,7 +295,7 @@ def report(totals, subs, startup, kernel, args):
 
     wall, tree, own, procs = totals
     (startup, startup_own) = startup
-    mode = ConfinedExecute.class_traits()["shutdown_kernel"].default_value
+    mode = args.shutdown or ConfinedExecute.class_traits()["shutdown_kernel"].default_value
     start = kernel["immediate"]  # killing costs ~0.01 s: this is the start
     stop = max(0.0, kernel[mode] - start)
     # the start-up's own children (bwrap's probe) are start-up, not kernels
@@ -332,6 +341,11 @@ def main(argv=None):
     parser.add_argument(
         "--per-student", action="store_true", help="one nbgrader process per student"
     )
+    parser.add_argument(
+        "--shutdown",
+        choices=("immediate", "graceful"),
+        help="how the kernel stops after the last cell (default: ConfinedExecute's)",
+    )
     args = parser.parse_args(argv)
     from grader.course import write_course
 
@@ -342,6 +356,9 @@ def main(argv=None):
     if args.keep and course.exists():
         shutil.rmtree(course)
     problem_sets = write_course(course)
+    if args.shutdown:  # to compare with the other way
+        with open(course / "nbgrader_config.py", "a") as config:
+            config.write(f"c.ConfinedExecute.shutdown_kernel = {args.shutdown!r}\n")
     students = [f"s{i:02d}" for i in range(1, args.students + 1)]
     print(f"{len(students)} students, {len(problem_sets)} problem sets, {args.jobs} jobs")
     try:

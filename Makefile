@@ -149,10 +149,11 @@ course: $(STAMP)
 	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR [ROSTER=roster.csv]"; exit 2; }
 	$(BIN)/python -m grader.course $(COURSE) $(if $(ROSTER),--roster "$(ROSTER)")
 
-# A class of 20 simulated students through `make course` and real nbgrader: autograde time
-# per submission and the projection for 60 students x 5 problem sets (a benchmark, not a test).
+# A class of 20 simulated students through `make course` and real nbgrader (a benchmark, not a
+# test): CPU per submission, the confined kernels' included, where it goes, and the projection
+# for 200 students x 5 problem sets on 2 cores (goal 20 min).
 bench-grade: $(STAMP)
-	$(BIN)/python benchmarks/bench_grade.py --students 20 --jobs 2
+	$(BIN)/python -m benchmarks.bench_grade --students 20 --jobs 2
 
 # Gradescope and Canvas (docs/grading.md): an autograder zip per problem set in build/gradescope/
 # (UNCONFINED=1: run submissions even where bubblewrap cannot confine them), the Canvas gradebook

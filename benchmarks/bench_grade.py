@@ -28,9 +28,9 @@ from pathlib import Path
 
 import nbformat
 
+from instructor.grading.course import write_course
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grader.course import write_course  # noqa: E402
 
 NBGRADER = Path(sys.executable).with_name("nbgrader")
 KINDS = ("solved", "blank", "half")

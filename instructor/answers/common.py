@@ -1,5 +1,5 @@
-"""What the chapters' variant draws share (tools/draws/chNN.py): the pair check, and the exact
-constructions that give each key thousands of parameter sets (issue 33)."""
+"""What the chapters' variant draws share (``DRAWS`` of instructor/answers/chNN.py): the pair
+check, and the exact constructions that give each key thousands of parameter sets (issue 33)."""
 
 import itertools
 from fractions import Fraction

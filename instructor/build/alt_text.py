@@ -5,10 +5,10 @@ text is that caption's first paragraph with the markdown and the LaTeX turned in
 Unicode: ``$R_z(60^\circ)$`` reads "Rz(60°)", ``$\frac{\theta}{2}$`` "θ/2", ``$a \times b$``
 "a × b". It keeps whole sentences (up to :data:`ALT_LIMIT` characters, at least the first): half
 a sentence tells a screen-reader user less than the sighted reader gets. The site
-(``site/build.py``) writes it as the ``alt`` of the figure's image; in the notebook
+(``instructor/build/website.py``) writes it as the ``alt`` of the figure's image; in the notebook
 ``plotting.show("...")`` carries the same text, and
 
-    python tools/alt_text.py --apply notebooks/[0-9]*.ipynb
+    python -m instructor.build.alt_text --apply notebooks/[0-9]*.ipynb
 
 rewrites each ``plotting.show`` call's text from the caption under it (then ``make notebooks``
 re-runs the chapters; it does this first). Without ``--apply`` it lists the calls whose text is

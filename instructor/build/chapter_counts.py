@@ -1,7 +1,7 @@
 """What a reader has on screen in each chapter, against the targets a chapter must keep.
 
-    python tools/chapter_counts.py                 # every chapter in notebooks/
-    python tools/chapter_counts.py notebooks/01_rigid_body_motion.ipynb
+    python -m instructor.build.chapter_counts                 # every chapter in notebooks/
+    python -m instructor.build.chapter_counts notebooks/01_rigid_body_motion.ipynb
 
 "On screen" is what JupyterLab shows when a chapter opens: every cell except those under a
 folded heading (a Markdown heading with ``"jp-MarkdownHeadingCollapsed": true`` in its cell
@@ -32,7 +32,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 # §0.1.1-§0.1.3 have 2,057, 5,403 and 3,190 words (whitespace-separated tokens); a chapter may
 # have about 1.15 times its section's words on screen.
 MAX_WORDS = {1: 2360, 2: 6200, 3: 3660}

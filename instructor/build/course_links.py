@@ -1,7 +1,7 @@
 """The course's public address, read from one place, and every link made from it.
 
 The repository URL lives only in ``[project.urls]`` of ``pyproject.toml`` (key ``Repository``).
-From it come the setup cell of every notebook (``tools/notebooks.py``), the launch links of the
+From it come the setup cell of every notebook (``instructor/build/notebooks.py``), the launch links of the
 README (the block between the ``launch-links`` markers, rewritten by this script) and the launch
 buttons of the course website (``site/conf.py``). While it is unset, all of them say so instead
 of pointing nowhere.
@@ -11,8 +11,8 @@ the copies ``make student`` builds (README, "Releasing the student edition").
 
 Command line::
 
-    python tools/course_links.py            # print the README block
-    python tools/course_links.py --readme   # rewrite the block in README.md
+    python -m instructor.build.course_links            # print the README block
+    python -m instructor.build.course_links --readme   # rewrite the block in README.md
 """
 
 from __future__ import annotations
@@ -22,9 +22,9 @@ import sys
 from pathlib import Path
 from urllib.parse import quote
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 STUDENT_BRANCH = "student"
-BEGIN = "<!-- launch-links:begin (written by tools/course_links.py from pyproject.toml) -->"
+BEGIN = "<!-- launch-links:begin (written by instructor/build/course_links.py from pyproject.toml) -->"
 END = "<!-- launch-links:end -->"
 UNSET = (
     "not published yet: set `Repository` in `[project.urls]` of `pyproject.toml`, "
@@ -126,7 +126,7 @@ def main(argv=None):
         notebooks = sorted(p.name for p in (ROOT / "notebooks").glob("[0-9]*.ipynb"))
         print(readme_block(repository_url(), notebooks))
     else:
-        print("usage: python tools/course_links.py [--readme]", file=sys.stderr)
+        print("usage: python -m instructor.build.course_links [--readme]", file=sys.stderr)
         return 2
     return 0
 

@@ -1,10 +1,10 @@
 """Make the checker's fingerprints from the instructor's reference solutions.
 
-    python tools/exercise_fingerprints.py          # course_lib/exercise_bank/fingerprints.json
-    python tools/exercise_fingerprints.py --check  # exit 1 if that file is out of date
+    python -m instructor.build.exercise_fingerprints          # course_lib/exercise_bank/fingerprints.json
+    python -m instructor.build.exercise_fingerprints --check  # exit 1 if that file is out of date
 
 For every exercise of the bank, runs the chapter's set-up code and the reference solution of
-``tools/solutions/chNN.py`` (the code the notebook's answer cell holds between the solution
+``instructor/answers/chNN.py`` (the code the notebook's answer cell holds between the solution
 markers), then stores only key-stretched digests of rounded values (see
 ``course_lib/exercises/_digests.py``): of every entry of a numeric answer, of the letters of a
 choice, of projections of a symbolic answer's values at the sample points and of the features
@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import argparse
 import hashlib
-import importlib.util
 import json
 import sys
 from concurrent.futures import ProcessPoolExecutor
@@ -30,37 +29,32 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
-
-from course_lib import exercise_bank  # noqa: E402
-from course_lib.exercises import EXERCISES, Choice, Expr, Value  # noqa: E402
-from course_lib.exercises import _digests as D  # noqa: E402
-from course_lib.exercises import _engine as E  # noqa: E402
-from course_lib.exercises._check import _numbers  # noqa: E402
-from course_lib.exercises._reading import read_answer, read_choice  # noqa: E402
-from course_lib.exercises._store import FIELD, Fingerprints, pack  # noqa: E402
-from course_lib.exercises._transforms import (  # noqa: E402
+from course_lib import exercise_bank
+from course_lib.exercises import EXERCISES, Choice, Expr, Value
+from course_lib.exercises import _digests as D
+from course_lib.exercises import _engine as E
+from course_lib.exercises._check import _numbers
+from course_lib.exercises._reading import read_answer, read_choice
+from course_lib.exercises._store import FIELD, Fingerprints, pack
+from course_lib.exercises._transforms import (
     EXPR_TRANSFORMS,
     NUMBER_OPS,
     PERMUTATIONS,
 )
-from course_lib.exercises._variants import TABLE_FILE, variant_name  # noqa: E402
+from course_lib.exercises._variants import TABLE_FILE, variant_name
+from instructor import answers
+
+ROOT = Path(__file__).resolve().parents[2]
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / "fingerprints.json"
 #: What each exercise's variant fingerprints were made from (instructor side, not shipped).
-INPUTS = ROOT / "tools" / "fingerprint_inputs.json"
+INPUTS = Path(__file__).with_name("fingerprint_inputs.json")
 TABLES = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 
 
 def solutions(chapter):
-    """The SOLUTIONS and MISTAKES dicts of ``tools/solutions/chNN.py``."""
-    path = ROOT / "tools" / "solutions" / f"{exercise_bank.CHAPTERS[chapter]}.py"
-    spec = importlib.util.spec_from_file_location(f"_solutions_{chapter}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.SOLUTIONS, module.MISTAKES
+    """The SOLUTIONS and MISTAKES dicts of ``instructor/answers/chNN.py``."""
+    return answers.solutions(chapter), answers.mistakes(chapter)
 
 
 def run(ex, code, params=None):
@@ -226,7 +220,7 @@ def build(sample=None, jobs=None, reuse=False, checkpoint=None):
         sols, mistakes = solutions(chapter)
         for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
             if ex.name not in sols:
-                raise ValueError(f"{ex.name}: no reference solution in tools/solutions")
+                raise ValueError(f"{ex.name}: no reference solution in instructor/answers")
             out[ex.name] = fingerprint(ex, sols[ex.name], mistakes.get(ex.name, {}))
             rows = variant_rows(ex)
             if not rows:
@@ -275,12 +269,12 @@ def _solutions_cached(chapter):
 
 def variant_rows(ex):
     """The rows of the variant table of ``ex`` (``[]`` without variants), read from the file
-    ``tools/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
+    ``instructor/build/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
     if ex.variants is None:
         return []
     rows = _tables().get(ex.variants.key)
     if not rows or rows[0] != ex.variants.default:
-        raise ValueError(f"{ex.name}: no variant table or a stale one: run tools/variant_tables.py")
+        raise ValueError(f"{ex.name}: no variant table or a stale one: run instructor/build/variant_tables.py")
     return rows
 
 

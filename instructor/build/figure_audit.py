@@ -1,8 +1,8 @@
 """Every figure of the course read for colour (WCAG 1.4.1, 1.4.3, 1.4.11), chapter cells included.
 
-    python -m tools.figure_audit [NOTEBOOK ...]   (default: notebooks/ and problem_sets/)
+    python -m instructor.build.figure_audit [NOTEBOOK ...]   (default: notebooks/ and problem_sets/)
 
-Each notebook is run (a copy, tools/notebooks.py's kernel) with ``plotting.show`` audited: every
+Each notebook is run (a copy, instructor/build/notebooks.py's kernel) with ``plotting.show`` audited: every
 figure it shows is read artist by artist before it becomes a PNG, and :func:`figure_problems`
 says what a reader with a colour-vision deficiency, or with low contrast sensitivity, would miss:
 
@@ -29,7 +29,7 @@ import matplotlib.colors as mc
 import nbformat
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 # Machado et al. 2009, Table 1, severity 1.0, acting on linear RGB.
 MACHADO = {
@@ -184,13 +184,11 @@ def _merged(k, series):
 _HOOK = """
 import json as _json, os as _os
 import course_lib.plotting.display as _display
-import sys as _sys
-_sys.path.insert(0, {tools!r})
-from figure_audit import figure_problems as _problems
+from instructor.build.figure_audit import figure_problems as _problems
 _figure_output = _display.figure_output
 def _audited(fig, alt):
     with open(_os.environ["COURSE_FIGURE_AUDIT"], "a", encoding="utf-8") as _f:
-        _f.write(_json.dumps({{"alt": alt[:70], "problems": _problems(fig)}}) + "\\n")
+        _f.write(_json.dumps({"alt": alt[:70], "problems": _problems(fig)}) + "\\n")
     return _figure_output(fig, alt)
 _display.figure_output = _audited
 """
@@ -198,18 +196,18 @@ _display.figure_output = _audited
 
 def audit(path):
     """[(figure alt text, problems)] of every figure the notebook at ``path`` shows."""
-    sys.path.insert(0, str(ROOT / "tools"))
-    import notebooks as nbtool
+    from instructor.build import notebooks as nbtool
 
     nb = nbformat.read(path, as_version=4)
     nbtool.put_setup_cell(nb, None)
-    nb.cells.insert(1, nbformat.v4.new_code_cell(_HOOK.format(tools=str(ROOT / "tools"))))
+    nb.cells.insert(1, nbformat.v4.new_code_cell(_HOOK))
     for cell in nb.cells:  # the stubs of a problem set raise: go on
         cell.metadata.setdefault("tags", []).append("raises-exception")
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(tmp) / "audit.jsonl"
         log.touch()
-        with _env(COURSE_FIGURE_AUDIT=str(log)):
+        # the kernel imports this module from the repository (it runs in the notebook's folder)
+        with _env(COURSE_FIGURE_AUDIT=str(log), PYTHONPATH=str(ROOT)):
             nbtool.execute(nb, path.parent)
         rows = [json.loads(line) for line in log.read_text(encoding="utf-8").splitlines()]
     return [(r["alt"], r["problems"]) for r in rows]

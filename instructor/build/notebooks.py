@@ -1,6 +1,6 @@
 """Execute and clean the course notebooks so that a re-run changes nothing in their JSON.
 
-``make notebooks`` runs ``python tools/notebooks.py --apply notebooks/[0-9]*.ipynb``. For every
+``make notebooks`` runs ``python -m instructor.build.notebooks --apply notebooks/[0-9]*.ipynb``. For every
 notebook, ``--apply``:
 
 1. puts the setup cell first (inserting it, or replacing an older version of it): a no-op where
@@ -41,8 +41,7 @@ from pathlib import Path
 
 import nbformat
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-from course_links import repository_url  # noqa: E402
+from instructor.build.course_links import repository_url
 
 SETUP_ID = "course-setup"
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"

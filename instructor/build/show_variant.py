@@ -1,12 +1,12 @@
 """What one student's problem set asks and its answers (instructor side: it runs the solutions).
 
-    python tools/show_variant.py STUDENT psNN [--roster R]  # make variant STUDENT=id PS=psNN
+    python -m instructor.build.show_variant STUDENT psNN [--roster R]  # make variant STUDENT=id PS=psNN
 
 For each exercise of the problem set with variants: the variant the student gets (the same id
 the grader is given: the nbgrader student id, the JupyterHub user or the e-mail, resolved to
 the course's key by the roster when one is given, as the grader does), the statement with that
 student's numbers, and the reference answer for them. With variants off
-(``tools/variant_tables.py --off``) every student gets variant 0 and it says so.
+(``python -m instructor.build.variant_tables --off``) every student gets variant 0 and it says so.
 """
 
 from __future__ import annotations
@@ -18,14 +18,11 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
-for path in (ROOT, ROOT / "tools"):
-    if str(path) not in sys.path:
-        sys.path.insert(0, str(path))
+ROOT = Path(__file__).resolve().parents[2]
 
-from course_lib.exercises import exercises, variant, variants_enabled  # noqa: E402
-from grader.identity import load  # noqa: E402
-from grader.verify import expected  # noqa: E402
+from course_lib.exercises import exercises, variant, variants_enabled
+from instructor.grading.identity import load
+from instructor.grading.verify import expected
 
 
 def report(student, chapter, roster=()):
@@ -51,7 +48,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("student", help="the student id (as nbgrader knows it)")
     parser.add_argument("ps", help="the problem set: ps01 ... ps05 (or 1 ... 5)")
-    parser.add_argument("--roster", help="the course's roster CSV (grader/identity.py)")
+    parser.add_argument("--roster", help="the course's roster CSV (instructor/grading/identity.py)")
     args = parser.parse_args(argv)
     m = re.fullmatch(r"(?:ps)?0*([1-9][0-9]*)", args.ps.strip())
     if not m:

@@ -31,7 +31,7 @@ its cell still refers to it (so a solution's images go with the solution).
 
 Command line (``make student`` runs it)::
 
-    python -m course_lib.student SRC_DIR OUT_DIR [--force]
+    python -m instructor.build.student SRC_DIR OUT_DIR [--force]
 
 The sources are only read. Every notebook is converted in memory, then all copies are written
 into a temporary folder inside OUT_DIR (on its filesystem) and moved into place, replacing the
@@ -475,7 +475,7 @@ def make_student_notebooks(src_dir, out_dir, force=False):
     >>> make_student_notebooks("notebooks", "notebooks/student")
     Traceback (most recent call last):
     ...
-    course_lib.student.StudentNotebookError: output directory notebooks/student is inside the
+    instructor.build.student.StudentNotebookError: output directory notebooks/student is inside the
     source directory notebooks; choose one outside it
     """
     src, out = Path(src_dir), Path(out_dir)
@@ -505,9 +505,9 @@ def make_student_notebooks(src_dir, out_dir, force=False):
 
 
 def main(argv=None):
-    """Command line: ``python -m course_lib.student SRC_DIR OUT_DIR [--force]``."""
+    """Command line: ``python -m instructor.build.student SRC_DIR OUT_DIR [--force]``."""
     parser = argparse.ArgumentParser(
-        prog="python -m course_lib.student",
+        prog="python -m instructor.build.student",
         description="Write student copies of the notebooks of SRC_DIR into OUT_DIR: solutions "
         "replaced by stubs, outputs cleared; all of them or nothing.",
     )
@@ -518,13 +518,13 @@ def main(argv=None):
     try:
         written = make_student_notebooks(args.src_dir, args.out_dir, force=args.force)
     except StudentNotebookError as err:
-        print(f"course_lib.student: error: {err}", file=sys.stderr)
+        print(f"instructor.build.student: error: {err}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
-        print("course_lib.student: error: interrupted; nothing was written", file=sys.stderr)
+        print("instructor.build.student: error: interrupted; nothing was written", file=sys.stderr)
         return 2
     except (OSError, RuntimeError) as err:  # anything the checks above did not name
-        print(f"course_lib.student: error: {args.out_dir}: {err}", file=sys.stderr)
+        print(f"instructor.build.student: error: {args.out_dir}: {err}", file=sys.stderr)
         return 2
     print(f"wrote {len(written)} student notebook(s) to {args.out_dir}")
     return 0

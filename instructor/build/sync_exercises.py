@@ -1,23 +1,23 @@
 """Write the problem sets from the exercise bank, and the pointer that ends each chapter.
 
-    python tools/sync_exercises.py          # every chapter of the bank
-    python tools/sync_exercises.py 1 3      # chapters 1 and 3 only
+    python -m instructor.build.sync_exercises          # every chapter of the bank
+    python -m instructor.build.sync_exercises 1 3      # chapters 1 and 3 only
 
-``make exercises`` runs it after ``tools/exercise_fingerprints.py`` and before executing the
+``make exercises`` runs it after ``instructor/build/exercise_fingerprints.py`` and before executing the
 problem sets. For chapter N (reading notebook ``notebooks/NN_<slug>.ipynb``) it writes:
 
 - ``problem_sets/psNN_<slug>.ipynb``, the nbgrader source notebook of the chapter's graded
   exercises: a title, how the exercises work, the set-up cell (the imports of ``SETUP`` in the
   chapter's bank module), then per exercise its statement (from the bank), its answer cell
   (nbgrader solution cell: ``answer_<name> = None`` and the worked solution of
-  ``tools/solutions/chNN.py`` between nbgrader's markers) and its check cell (autograder test
+  ``instructor/answers/chNN.py`` between nbgrader's markers) and its check cell (autograder test
   cell, locked, with the points of the exercise's level);
 - the last cell of the chapter: a pointer to its problem set. A chapter holds no exercise.
 
 What an instructor added by hand is kept: the hidden tests of a check cell (between
 ``### BEGIN HIDDEN TESTS`` and ``### END HIDDEN TESTS``) and every cell whose id this tool does
 not write (it stays after the cell it followed). The worked solutions have one home,
-``tools/solutions/chNN.py``: a problem set whose solution region differs from it is not
+``instructor/answers/chNN.py``: a problem set whose solution region differs from it is not
 overwritten (the tool says where, and exits 2), so an edit made in the notebook is never lost.
 
 Idempotent: a cell whose source and metadata are already right keeps its outputs. Cell ids are
@@ -34,14 +34,12 @@ from pathlib import Path
 
 import nbformat
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
+ROOT = Path(__file__).resolve().parents[2]
 
-from course_lib import exercise_bank  # noqa: E402
-from course_lib.exercises import exercises  # noqa: E402
-from course_lib.student import nbgrader_metadata  # noqa: E402
-from tools.exercise_fingerprints import solutions  # noqa: E402
+from course_lib import exercise_bank
+from course_lib.exercises import exercises
+from instructor.build.student import nbgrader_metadata
+from instructor.build.exercise_fingerprints import solutions
 
 CHAPTERS_DIR = ROOT / "notebooks"
 PROBLEM_SETS_DIR = ROOT / "problem_sets"
@@ -298,7 +296,7 @@ def _guard_solution(path, cid, old, code):
         return
     raise SyncError(
         f"{path.name}, cell {cid}: its worked solution was edited in the notebook and differs "
-        f"from tools/solutions; copy your edit into tools/solutions (the one home of the "
+        f"from instructor/answers; copy your edit into instructor/answers (the one home of the "
         f"solutions) or undo it, then run again. Nothing was written."
     )
 

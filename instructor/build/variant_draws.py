@@ -1,23 +1,21 @@
 r"""How each variant key draws its parameters, and what makes a draw unfit (issue 27).
 
 A *variant key* names the numbers one or more exercises share (``ch04_frames``: the two frames
-of exercises 4.1 and 4.2). Each chapter's ``tools/draws/chNN.py`` defines ``DRAWS``: each key
+of exercises 4.1 and 4.2). Each chapter's ``instructor/answers/chNN.py`` defines ``DRAWS``: each key
 mapped to a pair, a function of a numpy Generator that returns one set of parameters (plain
 lists and numbers, as the statement shows them, JSON-ready), and a function that lists why a
 set is unfit: a degenerate case that would make the exercise
 trivial, or a known mistake that would give the right answer (so its hint could never show).
 :data:`DRAWS` collects them; :func:`problems` and :func:`draw` use it.
-A draw is redrawn until it has no problem; ``tools/variant_tables.py`` writes the vetted table
+A draw is redrawn until it has no problem; ``instructor/build/variant_tables.py`` writes the vetted table
 and tests/test_variant_draws.py checks 1,000 seeds per key.
 """
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import numpy as np
+
+from instructor import answers
 
 __all__ = ["DRAWS", "problems", "draw"]
 
@@ -25,25 +23,8 @@ __all__ = ["DRAWS", "problems", "draw"]
 MAX_TRIES = 200
 
 
-def _collect():
-    """Every chapter's ``DRAWS`` (``tools/draws/chNN.py``), checked for clashing keys."""
-    out = {}
-    here = str(Path(__file__).parent)
-    if here not in sys.path:  # the chapters import draws.common
-        sys.path.insert(0, here)
-    for path in sorted(Path(__file__).with_name("draws").glob("ch[0-9][0-9].py")):
-        spec = importlib.util.spec_from_file_location(f"_draws_{path.stem}", path)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-        clash = set(out) & set(module.DRAWS)
-        if clash:
-            raise ValueError(f"{path.name}: variant keys defined twice: {sorted(clash)}")
-        out |= module.DRAWS
-    return out
-
-
 #: Variant key -> (draw function of a Generator, problems function of the parameters).
-DRAWS = _collect()
+DRAWS = answers.draws()
 
 
 def problems(key, params):

@@ -1,18 +1,18 @@
 """Write the vetted variant tables: ``course_lib/exercise_bank/variants.json``.
 
-    python tools/variant_tables.py          # write the tables (variants on or off, as they were)
-    python tools/variant_tables.py --on     # each student their own numbers
-    python tools/variant_tables.py --off    # the same tables, everyone the default numbers
-    python tools/variant_tables.py --check  # exit 1 if the file is not what this would write
-    python tools/variant_tables.py --roster ids.txt  # tune the assignment to a class
+    python -m instructor.build.variant_tables          # write the tables (variants on or off, as they were)
+    python -m instructor.build.variant_tables --on     # each student their own numbers
+    python -m instructor.build.variant_tables --off    # the same tables, everyone the default numbers
+    python -m instructor.build.variant_tables --check  # exit 1 if the file is not what this would write
+    python -m instructor.build.variant_tables --roster ids.txt  # tune the assignment to a class
 
 For every variant key of the bank (an exercise's ``Variants.key``), row 0 is the exercise's
 default (the numbers of the course without variants) and rows 1 to ``COUNT - 1`` (fewer when
 there are fewer different fit numbers, at least ``MIN_ROWS``) are drawn by
-``tools/variant_draws.py`` from seeds derived from the key, each redrawn until fit and
+``instructor/build/variant_draws.py`` from seeds derived from the key, each redrawn until fit and
 different from the rows before it. The table
 holds parameters only (what the statements show), never an answer. Then run
-``tools/exercise_fingerprints.py`` (``make exercises`` does both): the checker needs the
+``instructor/build/exercise_fingerprints.py`` (``make exercises`` does both): the checker needs the
 fingerprints of every row.
 """
 
@@ -25,15 +25,13 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-for path in (ROOT, ROOT / "tools"):
-    if str(path) not in sys.path:
-        sys.path.insert(0, str(path))
 
-import variant_draws  # noqa: E402
+from instructor.build import variant_draws
 
-from course_lib.exercises import EXERCISES  # noqa: E402
-from course_lib.exercises._variants import TABLE_FILE, _hashes, _row, course_key  # noqa: E402
+from course_lib.exercises import EXERCISES
+from course_lib.exercises._variants import TABLE_FILE, _hashes, _row, course_key
+
+ROOT = Path(__file__).resolve().parents[2]
 
 TARGET = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 #: Variants per key, the default included (issue 33: at least 1,000 per exercise; with a
@@ -113,12 +111,12 @@ def tune_spread(tables, ids):
 def read_roster(path):
     """The course keys of a roster, made as the kernel makes them (``course_key``): the
     instructor's class roster (a ``.csv``: a Canvas gradebook export or ``key,alias,...``, read
-    by :mod:`grader.identity`, which refuses a row it cannot trust), or one id per line (blank
+    by :mod:`instructor.grading.identity`, which refuses a row it cannot trust), or one id per line (blank
     lines and lines starting with # skipped)."""
     from course_lib.exercises._identity import course_key
 
     if str(path).endswith(".csv"):
-        from grader.identity import load
+        from instructor.grading.identity import load
 
         return sorted(set(load([path]).aliases.values()))
     text = Path(path).read_text(encoding="utf-8-sig")
@@ -130,7 +128,7 @@ def build(enabled=True, spread=None):
     tables = {}
     for key, default in sorted(defaults().items()):
         if key not in variant_draws.DRAWS:
-            raise ValueError(f"variant key {key} has no draw in tools/variant_draws.py")
+            raise ValueError(f"variant key {key} has no draw in instructor/build/variant_draws.py")
         unfit = variant_draws.problems(key, default)
         if unfit:
             raise ValueError(f"variant key {key}: its default is unfit: {unfit}")

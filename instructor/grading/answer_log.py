@@ -12,7 +12,7 @@ One file per student and notebook, written whole to a temporary name and then re
 (``os.replace``): autograde processes running at once for different students never write the
 same file, a reader never sees half a file, and grading a student again replaces their file
 (no stale lines, unlike one shared log appended to). On Gradescope the same entries go into each
-test's ``extra_data`` (:func:`grader.gradescope_run.results_for`).
+test's ``extra_data`` (:func:`instructor.grading.gradescope_run.results_for`).
 
 :class:`NoteChecksRun` (first of the sanitize preprocessors, before ``ClearOutput`` empties the
 outputs) notes on each check cell whether the student had run it in the notebook they handed
@@ -34,7 +34,9 @@ __all__ = ["FOLDER", "NoteChecksRun", "course_of", "save", "write", "read", "rea
 
 FOLDER = "answer-log"
 VERSION = 1
-CHECKED = "rotations_course_checked"  # grader.diagnose.CHECKED (not imported: sympy is slow)
+CHECKED = (
+    "rotations_course_checked"  # instructor.grading.diagnose.CHECKED (not imported: sympy is slow)
+)
 SUFFIX = "-check"
 
 

@@ -1,7 +1,8 @@
 """``make grades-canvas COURSE=DIR [ASSIGNMENT=psNN] [ROSTER=export.csv]``: nbgrader's grades
 as a CSV that Canvas's gradebook import takes.
 
-    python -m grader.canvas DIR [--assignment psNN ...] [--roster canvas-export.csv] [--out F]
+    python -m instructor.grading.canvas DIR [--assignment psNN ...] [--roster canvas-export.csv]
+    [--out F]
 
 Canvas imports a CSV laid out like its own gradebook export: the columns ``Student``, ``ID``,
 ``SIS User ID``, ``SIS Login ID``, ``Section`` (a student is matched by ``ID``, the Canvas user
@@ -18,7 +19,7 @@ ID`` the nbgrader id.
 
 Names, ids and sections come from students and the roster: a cell that a spreadsheet would read
 as a formula (``=``, ``+``, ``-``, ``@`` ...) is written with a leading ``'``
-(:mod:`grader.csv_safe`); Canvas matches students by ``ID``, which is a number.
+(:mod:`instructor.grading.csv_safe`); Canvas matches students by ``ID``, which is a number.
 The students of ``DIR/identity-report.csv`` (written by the grader: a notebook that showed
 other numbers than the student's own, or an id the course's roster does not know) are listed
 in the report too ("check the id"), with the exercises whose points a regrade may change.
@@ -30,7 +31,7 @@ to the report file beside the CSV. ``--missing zero`` (``make grades-canvas MISS
 writes 0 instead of a blank for missing work, still listed.
 
 ``--gradescope EXPORT`` (once per problem set) takes the scores from Gradescope's exports
-instead of a course directory (:mod:`grader.canvas_gradescope`), with the same columns,
+instead of a course directory (:mod:`instructor.grading.canvas_gradescope`), with the same columns,
 roster matching and report.
 """
 
@@ -44,7 +45,7 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from grader.csv_safe import write_rows
+from instructor.grading.csv_safe import write_rows
 
 __all__ = ["Export", "export", "read_roster", "write_csv", "IDENTITY"]
 
@@ -128,7 +129,9 @@ def export(course, assignments=None, roster=None, missing="blank"):
     if not db.is_file():
         raise ValueError(f"COURSE: no gradebook.db in {course} (run nbgrader autograde first)")
     fields, rows = read_roster(roster) if roster else (None, None)
-    report = Path(course) / "identity-report.csv"  # grader.identity.REPORT, by VerifyRecords
+    report = (
+        Path(course) / "identity-report.csv"
+    )  # instructor.grading.identity.REPORT, by VerifyRecords
     flagged = []
     if report.is_file():
         with open(report, newline="", encoding="utf-8") as f:
@@ -197,7 +200,8 @@ def _once(people, out):
 
 def write_csv(result, path):
     """Write the CSV (UTF-8, header then ``Points Possible`` then one row per student); a cell
-    that a spreadsheet would read as a formula is neutralised (:mod:`grader.csv_safe`)."""
+    that a spreadsheet would read as a formula is neutralised
+    (:mod:`instructor.grading.csv_safe`)."""
     return write_rows(path, [result.header, *result.rows])
 
 
@@ -207,7 +211,8 @@ def main(argv=None):
     parser.add_argument("--assignment", action="append", help="psNN (default: every one)")
     parser.add_argument("--roster", help="the course's Canvas gradebook export (CSV)")
     parser.add_argument("--out", help="the CSV to write (default: DIR/canvas-grades.csv)")
-    # issue 34: Gradescope's exported scores instead of a course (grader/canvas_gradescope.py)
+    # issue 34: Gradescope's exported scores instead of a course
+    # (instructor/grading/canvas_gradescope.py)
     parser.add_argument("--gradescope", action="append", help="a Gradescope export, per set")
     parser.add_argument("--missing", choices=("blank", "zero"), default="blank")
     args = parser.parse_args(argv)

@@ -1,8 +1,9 @@
 """Canvas grades from Gradescope's exported scores (``make grades-canvas GRADESCOPE=...``).
 
 Each export (*Export Submissions* zip or folder, or the *Download Grades* CSV,
-:func:`grader.report_data.from_gradescope`) is one problem set; a student's score is
-Gradescope's total of the submission. The CSV is :mod:`grader.canvas`'s: the same columns, the
+:func:`instructor.grading.report_data.from_gradescope`) is one problem set; a student's score is
+Gradescope's total of the submission. The CSV is :mod:`instructor.grading.canvas`'s: the same
+columns, the
 same matching to a Canvas roster (by SIS User ID, SIS Login ID, Canvas ID or e-mail), the same
 report of missing submissions and unknown students, missing work blank or 0 (``missing``).
 """
@@ -41,7 +42,8 @@ def _people(sets):
 
 
 def export(exports, assignments=None, roster=None, missing="blank"):
-    """An :class:`grader.canvas.Export` of the scores of Gradescope ``exports`` (paths)."""
+    """An :class:`instructor.grading.canvas.Export` of the scores of Gradescope ``exports``
+    (paths)."""
     sets = _sets(exports, assignments)
     fields, rows = read_roster(roster) if roster else (None, None)
     cols = [_column(ps.name, fields) for ps in sets]

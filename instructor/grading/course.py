@@ -1,18 +1,20 @@
 """``make course COURSE=DIR``: an nbgrader course directory for the problem sets.
 
-    python -m grader.course DIR
+    python -m instructor.grading.course DIR
 
 writes
 
 - ``DIR/roster.csv`` with ``--roster FILE`` (``make course ROSTER=FILE``): the instructor's
-  roster, checked, which maps every id of a student to the course's key (grader/identity.py);
-- ``DIR/nbgrader_config.py``: the course's preprocessors (:mod:`grader.preprocessor`: the
+  roster, checked, which maps every id of a student to the course's key
+  (instructor/grading/identity.py);
+- ``DIR/nbgrader_config.py``: the course's preprocessors (:mod:`instructor.grading.preprocessor`:
+  the
   confined kernel, the grader's verdict, the guard against malformed submissions), the folders
   the kernel must not see, timeouts;
 - ``DIR/source/psNN/psNN_<slug>.ipynb`` for every problem set: the notebooks of
   ``problem_sets/`` when the repository has them, otherwise the exercise section of each
   chapter notebook (everything from its ``## Exercises`` heading, check cells as
-  ``tools/sync_exercises.py`` writes them today).
+  ``instructor/build/sync_exercises.py`` writes them today).
 
 Then the plain nbgrader commands are the instructor's whole workflow::
 
@@ -34,18 +36,16 @@ from pathlib import Path
 
 import nbformat
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
+from instructor.build import sync_exercises
+from instructor.grading.sandbox import INSTALL, confinement_problem
 
-from grader.sandbox import INSTALL, confinement_problem  # noqa: E402
-from tools import sync_exercises  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
 
 __all__ = ["problem_sets", "config_text", "write_course", "hidden_folders", "write_feedback_math"]
 
 KERNELSPEC = {"name": "python3", "display_name": "Python 3 (ipykernel)", "language": "python"}
 TIMEOUT = 60
-BUDGET = 300  # seconds for a notebook's whole run (grader.preprocessor.ConfinedExecute)
+BUDGET = 300  # seconds for a notebook's whole run (instructor.grading.preprocessor.ConfinedExecute)
 RECORD = "record("  # what every check cell calls (course_lib.record)
 #: MathJax 3 as the site build installs it from npm (``make site``).
 MATHJAX = Path("build") / "site-deps" / "node_modules" / "mathjax" / "es5" / "tex-svg.js"
@@ -65,7 +65,7 @@ import os as _os
 
 import nbgrader as _nbgrader
 
-from grader.pages import FeedbackExporter
+from instructor.grading.pages import FeedbackExporter
 
 _formgrader = _os.path.join(_os.path.dirname(_nbgrader.__file__), "server_extensions", "formgrader")
 # On the feedback's exporter only: the formgrader's HTMLExporter keeps nbgrader's own template.
@@ -78,11 +78,11 @@ c.FeedbackExporter.extra_template_basedirs = [
 """
 
 CONFIG = """\
-# The course's nbgrader configuration, written by `make course` (grader/course.py).
+# The course's nbgrader configuration, written by `make course` (instructor/grading/course.py).
 # Points are decided outside the student's kernel: see docs/grading.md.
 import sys
 
-sys.path.insert(0, {repo!r})  # the instructor's grader/ and tools/solutions
+sys.path.insert(0, {repo!r})  # the repository: the instructor package (its grading, its answers)
 
 from nbconvert.preprocessors import ClearMetadataPreprocessor
 from nbgrader.preprocessors import (
@@ -97,7 +97,7 @@ from nbgrader.preprocessors import (
     SaveAutoGrades,
 )
 
-from grader.preprocessor import (
+from instructor.grading.preprocessor import (
     CapOutput,
     ConfinedExecute,
     ConfinedExporter,
@@ -105,8 +105,9 @@ from grader.preprocessor import (
     ShownNumbers,
     VerifyRecords,
 )
-from grader.pages import InertStudentHTML
-from grader.answer_log import NoteChecksRun  # issue 34: was each check run by the student?
+from instructor.grading.pages import InertStudentHTML
+# issue 34: was each check run by the student?
+from instructor.grading.answer_log import NoteChecksRun
 
 c = get_config()  # noqa: F821
 c.CourseDirectory.root = {root!r}
@@ -115,7 +116,7 @@ c.CourseDirectory.course_id = "rotations"
 # A deleted, duplicated or retyped grade cell: put back with 0 points and a note.
 # ShownNumbers first: which numbers the student's own run showed (a note, never points).
 c.Autograde.sanitize_preprocessors = [
-    NoteChecksRun,  # issue 34: before ClearOutput empties the outputs (grader/answer_log.py)
+    NoteChecksRun,  # issue 34: before ClearOutput empties them (instructor/grading/answer_log.py)
     ShownNumbers,
     ClearOutput,
     GuardCells,
@@ -129,7 +130,7 @@ c.Autograde.autograde_preprocessors = [
     ConfinedExecute,
     VerifyRecords,
     CapOutput,
-    InertStudentHTML,  # the student's markdown and raw HTML as text (grader/pages.py)
+    InertStudentHTML,  # the student's markdown and raw HTML as text (instructor/grading/pages.py)
     IgnorePattern,
     ClearMetadataPreprocessor,
     LimitOutput,
@@ -140,9 +141,10 @@ c.Autograde.autograde_preprocessors = [
 c.Execute.timeout = {timeout}  # seconds per cell
 # A notebook's whole run: a cell not started after this many seconds is not run (0, a note).
 c.ConfinedExecute.notebook_budget = {budget}
-# Intake (grader/intake.py): only regular files inside a submission are read, at most 20 MB;
-# autograde reads submitted/ through ConfinedExporter, collect copies from the exchange so.
-c.ExchangeFactory.collect = "grader.collect.SafeCollect"
+# Intake (instructor/grading/intake.py): only regular files inside a submission are read, at
+# most 20 MB; autograde reads submitted/ through ConfinedExporter, collect copies from the
+# exchange so.
+c.ExchangeFactory.collect = "instructor.grading.collect.SafeCollect"
 c.ConfinedKernelManager.hide = {hide!r}
 # Without bubblewrap, autograde refuses to run students' code (it would run as you, with the
 # solutions and the gradebook in reach). Only for work you trust (docs/grading.md):
@@ -156,10 +158,10 @@ c.Validator.width = 100000  # `nbgrader validate`: each failed check's hint on o
 # logged-in browser and could set its own grades through the formgrader's API.
 c.HTMLExporter.sanitize_html = True
 # Every link and source of rendered markdown and output HTML through nh3: only http, https,
-# mailto and in-page anchors, decided after decoding (grader/pages.py).
+# mailto and in-page anchors, decided after decoding (instructor/grading/pages.py).
 c.HTMLExporter.filters = {{
-    "markdown2html": "grader.pages.safe_markdown2html",
-    "clean_html": "grader.pages.clean_html",
+    "markdown2html": "instructor.grading.pages.safe_markdown2html",
+    "clean_html": "instructor.grading.pages.clean_html",
 }}
 # The roster (docs/variants.md, "One id per student"): every alias of a student (this nbgrader
 # student id, a hub user, an SIS id) to the course's key, from which their numbers are drawn.
@@ -207,7 +209,7 @@ def hidden_folders(course, root=ROOT):
 
     out = [Path(course).resolve(), root.resolve()]
     for candidate in (Path(sys.prefix).parent, Path(course_lib.__file__).resolve().parents[1]):
-        if (candidate / "tools" / "solutions").is_dir():
+        if (candidate / "instructor" / "answers").is_dir():
             out.append(candidate.resolve())
     return sorted({str(p) for p in out})
 
@@ -229,9 +231,10 @@ ROSTER = "roster.csv"  # the copy of the instructor's roster in the course direc
 
 
 def copy_roster(roster, course):
-    """Check the roster (:mod:`grader.identity`: RosterError naming the line) and copy it
+    """Check the roster (:mod:`instructor.grading.identity`: RosterError naming the line) and copy
+    it
     into the course directory, which the confined kernel never sees; returns the copy."""
-    from grader.identity import load
+    from instructor.grading.identity import load
 
     load([roster])
     dest = Path(course) / ROSTER

@@ -1,15 +1,17 @@
 """What the grader notes about one graded answer, for the class report (issue 34).
 
-:func:`entry` is called by :class:`grader.preprocessor.VerifyRecords` for every exercise check
+:func:`entry` is called by :class:`instructor.grading.preprocessor.VerifyRecords` for every
+exercise check
 cell, in the grader's process, after its verdict: it keeps the verdict, the **known mistake** the
-answer is (its key in ``MISTAKES`` of ``tools/solutions/chNN.py``, whose hint text is the bank's
+answer is (its key in ``MISTAKES`` of ``instructor/answers/chNN.py``, whose hint text is the bank's
 ``mistakes[key]``), the variant the student was graded on and the one the notebook showed,
 whether the student had run the check cell in the notebook they handed in, and, for a wrong
 answer that no known mistake explains, a short text of the answer and a **group** key: equal
 values (or equal expressions) get the same key.
 
 A known mistake is matched the way the grader matches the right answer
-(:mod:`grader.verify`): the instructor's mistaken expression is computed for the student's own
+(:mod:`instructor.grading.verify`): the instructor's mistaken expression is computed for the
+student's own
 variant and compared with the answer (choices: the same letters; numbers: within 4·TOL;
 expressions: the same tree, else at fresh random points). The group key of an expression is
 its values at :data:`GROUP_POINTS` fixed points rounded to :data:`DIGITS` significant digits
@@ -20,7 +22,6 @@ letters. Nothing here decides points.
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 from functools import cache
 
 import numpy as np
@@ -31,13 +32,14 @@ from course_lib.exercises import EXERCISES, Choice, Value
 from course_lib.exercises import _engine as E
 from course_lib.exercises._reading import read_choice
 from course_lib.exercises._variants import table
+from instructor import answers
 
 from . import verify as V
 from .records import parse
 
 __all__ = ["entry", "known_mistake", "group_of", "CHECKED", "DIGITS", "OTHER"]
 
-#: Cell metadata key set by :class:`grader.answer_log.NoteChecksRun` on each check cell.
+#: Cell metadata key set by :class:`instructor.grading.answer_log.NoteChecksRun` on each check cell.
 CHECKED = "rotations_course_checked"
 DIGITS = 6  # significant digits of the group key
 GROUP_POINTS = 5
@@ -46,13 +48,8 @@ SHOWN = 120  # characters of an answer's text kept for the report
 OTHER = "other-numbers"
 
 
-@cache
 def _mistakes(chapter):
-    path = V.SOLUTIONS / f"{exercise_bank.CHAPTERS[chapter]}.py"
-    spec = importlib.util.spec_from_file_location(f"_grader_mistakes_{chapter}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return getattr(module, "MISTAKES", {})
+    return answers.mistakes(chapter)
 
 
 @cache
@@ -160,7 +157,8 @@ def entry(name, data, student, result, checked=None):
     """What the report keeps of one graded answer (a JSON-ready dict).
 
     ``data`` is the record (or None when there was none), ``result`` the grader's verdict
-    (:class:`grader.verify.Verdict`, or None when a grading note gave 0 before any verdict),
+    (:class:`instructor.grading.verify.Verdict`, or None when a grading note gave 0 before any
+    verdict),
     ``checked`` whether the check cell had been run in the handed-in notebook (None: unknown).
     """
     out = {"exercise": name, "verdict": result.status if result else "zero", "mistake": None}

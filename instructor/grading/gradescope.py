@@ -1,6 +1,6 @@
 """``make gradescope``: a Gradescope autograder zip per problem set, ``build/gradescope/psNN.zip``.
 
-    python -m grader.gradescope [--out build/gradescope] [--unconfined] [ps01 ...]
+    python -m instructor.grading.gradescope [--out build/gradescope] [--unconfined] [ps01 ...]
 
 Each zip holds, at its root, what Gradescope's autograder specification asks for
 (``setup.sh``, ``run_autograder``) and what grading needs:
@@ -8,18 +8,25 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
 - ``course_lib/``, ``pyproject.toml``, ``README.md``, the pins (``environment-student.txt``,
   ``requirements-grader.txt``: nbgrader's and nh3's pins from ``environment.txt``): setup.sh
   installs them into ``/opt/rotations-venv`` (outside ``/autograder``);
-- ``grader/`` (the course's grader: the same preprocessors and verdicts as ``make course``),
-  ``tools/sync_exercises.py``, ``tools/exercise_fingerprints.py``;
+- of the ``instructor`` package, what grading needs (:func:`_grading_files`): ``grading/`` (the
+  course's grader: the same preprocessors and verdicts as ``make course``), the problem-set
+  sync that :mod:`instructor.grading.course` runs (``build/sync_exercises.py``,
+  ``build/exercise_fingerprints.py``, ``build/student.py``) and the loader of the answers
+  (``answers/__init__.py``, ``answers/common.py``: no answer in either); no other build or
+  release step;
 - ``roster.csv`` when built with ``--roster`` (``make gradescope ROSTER=...``): the class
-  roster that maps Gradescope's e-mail or ``sid`` to the course's key (:mod:`grader.identity`),
+  roster that maps Gradescope's e-mail or ``sid`` to the course's key
+  (:mod:`instructor.grading.identity`),
   scanned by the leak gate like the rest; students never see the zip;
-- **instructor only** (:data:`SECRET`): ``tools/solutions/chNN.py`` of this set's chapter only
-  (the reference solutions that :mod:`grader.verify` re-checks every recorded answer against,
+- **instructor only** (:data:`SECRET`): ``instructor/answers/chNN.py`` of this set's chapter
+  only (the reference solutions that :mod:`instructor.grading.verify` re-checks every recorded
+  answer against,
   at fresh points; never another chapter's) and
   ``problem_sets/psNN_*.ipynb`` (the instructor's solved copy, from which nbgrader builds its
   gradebook and the released cells it puts back).
 
-The leak gate (``release/leak_gate.py``) scans every other member (:func:`leak_check`): none
+The leak gate (``instructor/release/leak_gate.py``) scans every other member (:func:`leak_check`):
+none
 may hold a worked-solution line or the record of a right answer, nor (but for the code and
 README, which name the markers they handle) an nbgrader marker. Gradescope does not show the
 zip to students; what they see is ``results.json``, which holds only points, the checker's
@@ -31,7 +38,7 @@ privilege drop: folders closed to the kernel's uid). With neither, the autograde
 run the notebook and exits 1 (``--unconfined`` makes it run it anyway, with the solutions in
 reach: docs/grading.md).
 setup.sh brings a Python the pins install on (:data:`MIN_PYTHON`; Ubuntu 22.04's universe
-``python3.11``) and ends with ``gradescope_run.py selftest``.
+``python3.11``) and ends with ``python -m instructor.grading.gradescope_run selftest``.
 """
 
 from __future__ import annotations
@@ -43,15 +50,13 @@ import sys
 import zipfile
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
+ROOT = Path(__file__).resolve().parents[2]
 
 __all__ = ["members", "build_zip", "leak_check", "SECRET", "SETUP", "RUN", "MIN_PYTHON"]
 
 VENV = "/opt/rotations-venv"
 #: Zip members that hold the solutions on purpose (the leak gate does not scan them).
-SECRET = re.compile(r"^(tools/solutions/[^/]+\.py|problem_sets/ps\d\d_[^/]+\.ipynb)$")
+SECRET = re.compile(r"^(instructor/answers/ch\d\d\.py|problem_sets/ps\d\d_[^/]+\.ipynb)$")
 #: The class roster, in the zip on purpose (Gradescope does not show the zip to students).
 ROSTER_MEMBER = "roster.csv"
 
@@ -84,9 +89,10 @@ fi
 # course_lib as a copy in the venv: the kernel sees the venv, never /autograder/source
 {VENV}/bin/python -m pip install --quiet --no-deps /autograder/source
 chmod 700 /autograder/source
-{VENV}/bin/python /autograder/source/grader/gradescope_run.py prepare
+cd /autograder/source
+{VENV}/bin/python -m instructor.grading.gradescope_run prepare
 # grade the solved copy (full marks) and a blank copy (0) as students will be graded
-{VENV}/bin/python /autograder/source/grader/gradescope_run.py selftest \\
+{VENV}/bin/python -m instructor.grading.gradescope_run selftest \\
     || fail "the self-test failed (above): this image would not grade students right"
 """
 
@@ -96,13 +102,32 @@ RUN = f"""\
 # ROTATIONS_AUTOGRADER_ROOT and ROTATIONS_PYTHON: for the tests only.
 ROOT="${{ROTATIONS_AUTOGRADER_ROOT:-/autograder}}"
 PY="${{ROTATIONS_PYTHON:-{VENV}/bin/python}}"
-cd "$ROOT"
-exec "$PY" "$ROOT/source/grader/gradescope_run.py" grade
+cd "$ROOT/source"
+exec "$PY" -m instructor.grading.gradescope_run grade
 """
 
 
-#: What the grader needs beyond the student's environment: nbgrader, and nh3 (grader/pages.py).
+#: What the grader needs beyond the student's environment: nbgrader, and nh3
+# (instructor/grading/pages.py).
 GRADER_PACKAGES = ("nbgrader", "nh3")
+
+
+def _grading_files(root=ROOT):
+    """What of the instructor package grading needs (no answers, no build or release step but
+    the problem-set sync that :mod:`instructor.grading.course` runs): repository paths."""
+    grading = sorted(
+        p.relative_to(root).as_posix() for p in (root / "instructor" / "grading").glob("*.py")
+    )
+    return (
+        "instructor/__init__.py",
+        "instructor/answers/__init__.py",
+        "instructor/answers/common.py",
+        "instructor/build/__init__.py",
+        "instructor/build/student.py",
+        "instructor/build/sync_exercises.py",
+        "instructor/build/exercise_fingerprints.py",
+        *grading,
+    )
 
 
 def _grader_pins(root=ROOT):
@@ -127,22 +152,21 @@ def members(ps, root=ROOT, unconfined=False, roster=None):
     for name in ("pyproject.toml", "README.md", "LICENSE", "environment-student.txt"):
         out[name] = (root / name).read_bytes()
     out["requirements-grader.txt"] = (_grader_pins(root) + "\n").encode()
-    for folder in ("course_lib", "grader"):
-        for path in sorted((root / folder).rglob("*")):
-            if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
-                out[path.relative_to(root).as_posix()] = path.read_bytes()
-    for name in ("sync_exercises.py", "exercise_fingerprints.py"):
-        out[f"tools/{name}"] = (root / "tools" / name).read_bytes()
-    # only this set's chapter: the reference solutions import nothing (SOLUTIONS is text)
-    solutions = root / "tools" / "solutions" / f"ch{int(ps[2:]):02d}.py"
-    if not solutions.is_file():
-        raise ValueError(f"{ps}: no reference solutions {solutions.relative_to(root)}")
-    out[f"tools/solutions/{solutions.name}"] = solutions.read_bytes()
+    for path in sorted((root / "course_lib").rglob("*")):
+        if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
+            out[path.relative_to(root).as_posix()] = path.read_bytes()
+    for name in _grading_files(root):
+        out[name] = (root / name).read_bytes()
+    # the answers of this set's chapter only, through their one loader (instructor.answers)
+    answers = f"instructor/answers/ch{int(ps[2:]):02d}.py"
+    if not (root / answers).is_file():
+        raise ValueError(f"{ps}: no answers {answers}")
+    out[answers] = (root / answers).read_bytes()
     out[f"problem_sets/{made[0].name}"] = made[0].read_bytes()
     if unconfined:
         out["UNCONFINED"] = b"students' code runs unconfined (docs/grading.md)\n"
     if roster:
-        from grader.identity import load
+        from instructor.grading.identity import load
 
         load([roster])  # RosterError naming the line: no zip that grades on a guess
         out["roster.csv"] = Path(roster).read_bytes()
@@ -151,8 +175,7 @@ def members(ps, root=ROOT, unconfined=False, roster=None):
 
 def leak_check(files, root=ROOT):
     """Leak-gate hits in the zip members that are not :data:`SECRET` (a list of lines)."""
-    sys.path.insert(0, str(root / "release"))
-    import leak_gate
+    from instructor.release import leak_gate
 
     needles = leak_gate.collect_needles(root)
     report = leak_gate.Report()

@@ -1,19 +1,21 @@
 """What Gradescope's ``run_autograder`` runs: one submission graded by real ``nbgrader
 autograde`` with the course's configuration, written as Gradescope's ``results.json``.
 
-    python grader/gradescope_run.py prepare      # setup.sh, once per image
-    python grader/gradescope_run.py grade        # run_autograder, once per submission
-    python grader/gradescope_run.py selftest     # setup.sh's last step
+    cd /autograder/source
+    python -m instructor.grading.gradescope_run prepare    # setup.sh, once per image
+    python -m instructor.grading.gradescope_run grade      # run_autograder, once per submission
+    python -m instructor.grading.gradescope_run selftest   # setup.sh's last step
 
 ``prepare`` makes an nbgrader course directory ``<root>/course``
-(:func:`grader.course.write_course`, then ``nbgrader generate_assignment``) from the problem
+(:func:`instructor.grading.course.write_course`, then ``nbgrader generate_assignment``) from the
+problem
 set shipped in ``<root>/source``.
 ``grade`` takes the notebook of ``<root>/submission`` through the course's intake
-(:mod:`grader.intake`: the file named as the problem set's, else the only ``*.ipynb``; a
+(:mod:`instructor.grading.intake`: the file named as the problem set's, else the only ``*.ipynb``; a
 regular file of one name inside the folder, at most 20 MB, checked before it is read, JSON
 with cells), writes the grader's own copy into ``course/submitted/<student_id>/psNN/``, runs
 ``nbgrader autograde psNN --student=<student_id>`` (the confined kernel,
-:class:`grader.preprocessor.VerifyRecords`: the same code path, so the same points as
+:class:`instructor.grading.preprocessor.VerifyRecords`: the same code path, so the same points as
 ``make course``), and writes ``<root>/results/results.json`` from the gradebook: one test per
 exercise with the checker's hint or the grader's note (shown as text, never HTML).
 
@@ -38,7 +40,8 @@ grading container, which holds the solutions (docs/grading.md).
 
 The student: ``users[0]`` of ``<root>/submission_metadata.json``: its ``email``, ``sid`` or
 ``id``, whichever the course's roster (``source/roster.csv``, in the zip when built with
-``ROSTER=``) knows, resolved to the course's key (:func:`identity`, :mod:`grader.identity`);
+``ROSTER=``) knows, resolved to the course's key (:func:`identity`,
+:mod:`instructor.grading.identity`);
 without a roster, the e-mail, normalised. The nbgrader student id of the graded copy is that
 key made a folder name, and ``course/submission-id.csv`` maps it back to the key, so every
 preprocessor grades the key's numbers. ``results.json`` says whose numbers were graded when
@@ -67,8 +70,9 @@ CELL_TIMEOUT = 60
 MAX_OUTPUT = 2_000  # characters of one test's output in results.json
 VISIBILITY = "visible"
 UNCONFINED_FLAG = "UNCONFINED"
-SOURCE = Path(__file__).resolve().parents[1]
-HINT = "The check said: "  # grader.preprocessor.HINT (not imported: nbgrader is slow to load)
+SOURCE = Path(__file__).resolve().parents[2]
+# instructor.grading.preprocessor.HINT (not imported: nbgrader is slow to load)
+HINT = "The check said: "
 ROSTER = "roster.csv"  # the instructor's roster in the zip (source/), when there is one
 SUBMISSION_ID = "submission-id.csv"  # this run's folder name -> the course's key
 NOTE = "**GradingNote**: "  # the first cell of an autograded notebook with an identity note
@@ -109,13 +113,14 @@ def _aliases(metadata):
 
 
 def identity(metadata, roster):
-    """The :class:`grader.identity.Resolved` key of the submission's student: the first of
+    """The :class:`instructor.grading.identity.Resolved` key of the submission's student: the first
+    of
     its e-mail, ``sid`` and ``id`` that the roster knows, else the e-mail (or the first id
     there is) as given, normalised, with a note when there is a roster.
 
     Examples
     --------
-    >>> from grader.identity import Roster
+    >>> from instructor.grading.identity import Roster
     >>> r = Roster({"3031042": "alice@b.edu", "alice@b.edu": "alice@b.edu"}, ["roster.csv"])
     >>> identity({"users": [{"sid": "3031042", "email": "Alice@old.edu"}]}, r).key
     'alice@b.edu'
@@ -167,8 +172,7 @@ def _env():
 
 def prepare(top=None):
     """setup.sh's step: the nbgrader course directory ``<root>/course`` for this set."""
-    sys.path.insert(0, str(SOURCE))
-    from grader.course import write_course
+    from instructor.grading.course import write_course
 
     top = Path(top or root())
     course = top / "course"
@@ -254,7 +258,9 @@ def results_for(course, ps, student, started):
     if autograded is not None:
         nb = nbformat.read(autograded, as_version=4)
         cells = {c.metadata.get("nbgrader", {}).get("grade_id"): c for c in nb.cells}
-    from grader.answer_log import read_student  # issue 34: the grader's notes per answer
+    from instructor.grading.answer_log import (
+        read_student,  # issue 34: the grader's notes per answer
+    )
 
     notes = read_student(course, ps, student)
     tests = []
@@ -312,7 +318,7 @@ def _identity_data(course, ps, student):
     """The row of the course's identity report for this submission, or the plain key."""
     import csv
 
-    from grader.csv_safe import neutralise
+    from instructor.grading.csv_safe import neutralise
 
     report = course / "identity-report.csv"
     if report.is_file():
@@ -329,9 +335,10 @@ class GraderFault(RuntimeError):
 
 
 def _intake(top, expected):
-    """``(bytes of the notebook to grade, note)``; :class:`grader.intake.Refused` with the
-    student's note when there is none to grade (grader/intake.py)."""
-    from grader import intake
+    """``(bytes of the notebook to grade, note)``; :class:`instructor.grading.intake.Refused` with
+    the
+    student's note when there is none to grade (instructor/grading/intake.py)."""
+    from instructor.grading import intake
 
     folder = top / "submission"
     if not folder.is_dir() or folder.is_symlink():
@@ -345,8 +352,8 @@ def _intake(top, expected):
 def confinement():
     """``(name, problem)`` of the confinement this autograder uses: bubblewrap, else the
     privilege drop (a root grader: Gradescope's Docker container), the first that can start
-    (:func:`grader.sandbox.confinement`); ``problem`` is None when one can start."""
-    from grader import sandbox
+    (:func:`instructor.grading.sandbox.confinement`); ``problem`` is None when one can start."""
+    from instructor.grading import sandbox
 
     if (SOURCE / UNCONFINED_FLAG).is_file():
         return "unconfined (opted in: UNCONFINED)", None
@@ -398,8 +405,8 @@ def grade(top=None, course=None):
 
 
 def _grade(top, started, budget, course):
-    from grader.identity import load
-    from grader.intake import Refused
+    from instructor.grading.identity import load
+    from instructor.grading.intake import Refused
 
     ps, expected = assignment()
     metadata = {}
@@ -511,11 +518,11 @@ def main(argv=None):
             file=sys.stderr,
         )
         return 1
-    print("usage: gradescope_run.py prepare|grade|selftest", file=sys.stderr)
+    print(
+        "usage: python -m instructor.grading.gradescope_run prepare|grade|selftest", file=sys.stderr
+    )
     return 2
 
 
 if __name__ == "__main__":
-    if str(SOURCE) not in sys.path:
-        sys.path.insert(0, str(SOURCE))
     sys.exit(main())

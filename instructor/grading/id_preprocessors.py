@@ -3,12 +3,13 @@ notebook showed (issue 33).
 
 - :class:`CourseIdentity` (``c.CourseIdentity.rosters``, written by ``make course
   ROSTER=...``): the roster files that map every alias of a student (nbgrader's student id, a
-  hub user, an SIS id) to the course's key (:mod:`grader.identity`), read once per run;
+  hub user, an SIS id) to the course's key (:mod:`instructor.grading.identity`), read once per run;
   ``c.CourseIdentity.report``: the instructor's list of the students whose id needs a look
   (default ``identity-report.csv`` beside ``gradebook.db``).
 - :class:`ShownNumbers` (sanitize stage, before ``ClearOutput``): which variant of each
   exercise the submitted notebook showed, read from the records its check cells left when the
-  student ran them, kept in the notebook's metadata for :class:`~grader.preprocessor.VerifyRecords`.
+  student ran them, kept in the notebook's metadata for
+  :class:`~instructor.grading.preprocessor.VerifyRecords`.
   A note for the feedback and the report only: it never decides a point.
 """
 
@@ -50,7 +51,8 @@ class CourseIdentity(LoggingConfigurable):
     ).tag(config=True)
 
     def roster(self):
-        """The :class:`grader.identity.Roster` (RosterError when a file cannot be trusted)."""
+        """The :class:`instructor.grading.identity.Roster` (RosterError when a file cannot be
+        trusted)."""
         paths = tuple(str(p) for p in self.rosters)
         return _load(paths, tuple(os.stat(p).st_mtime_ns for p in paths))
 

@@ -1,8 +1,9 @@
 """One key per student, on the grader's side: the instructor's roster (it never ships).
 
-    python -m grader.identity --check ROSTER.csv [ID ...]   # read a roster: its size, or errors;
+    python -m instructor.grading.identity --check ROSTER.csv [ID ...]   # read a roster: its size,
+    or errors;
                                                             # with IDs, the key of each
-    python -m grader.identity --domain berkeley.edu         # the course's e-mail domain
+    python -m instructor.grading.identity --domain berkeley.edu         # the course's e-mail domain
 
 The course's key of a student (:mod:`course_lib.exercises._identity`) is their normalised
 institutional e-mail, or login, from which their exercises' numbers are drawn. Every platform
@@ -41,7 +42,7 @@ from course_lib.exercises._identity import (
     normalise_id,
 )
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 __all__ = ["Resolved", "Roster", "RosterError", "read_roster", "load", "write_report", "REPORT"]
 
@@ -205,9 +206,10 @@ def write_report(path, assignment, student, row):
 
 
 def _rewrite(path, assignment, student, row):
-    """The report's rows, every cell formula-safe (:mod:`grader.csv_safe`: ``shown_as`` comes
+    """The report's rows, every cell formula-safe (:mod:`instructor.grading.csv_safe`: ``shown_as``
+    comes
     from the student's own record), as they are stored and matched."""
-    from grader.csv_safe import neutralise
+    from instructor.grading.csv_safe import neutralise
 
     rows = []
     this = (neutralise(assignment), neutralise(student))
@@ -249,7 +251,7 @@ def main(argv=None):
             print(f"e-mail domain of the course: {value}; now `make exercises` and commit")
         roster = load([args.check] if args.check else [])
     except (OSError, ValueError) as err:
-        print(f"grader.identity: {err}", file=sys.stderr)
+        print(f"instructor.grading.identity: {err}", file=sys.stderr)
         return 2
     if args.check:
         print(f"{args.check}: {len(roster)} students, {len(roster.aliases)} aliases")

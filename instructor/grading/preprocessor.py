@@ -1,10 +1,12 @@
 """The nbgrader preprocessors of the course (named in its ``nbgrader_config.py``).
 
-- :class:`ConfinedExecute` runs a submission in the confined kernel of :mod:`grader.sandbox`
+- :class:`ConfinedExecute` runs a submission in the confined kernel of
+  :mod:`instructor.grading.sandbox`
   (nbgrader's own ``Execute``, with that kernel manager whatever the notebook names).
 - :class:`VerifyRecords` runs after it, in nbgrader's process, which no student code has
   touched: every exercise check cell keeps its points only when the grader's verdict on the
-  answer it recorded (:mod:`grader.verify`) is "correct"; otherwise its outputs become one
+  answer it recorded (:mod:`instructor.grading.verify`) is "correct"; otherwise its outputs become
+  one
   error whose one line says why. A missing, duplicated, forged or unreadable record gives 0.
 - :class:`GuardCells` runs first on a submission (sanitize stage): a grade cell of the release
   that was deleted, duplicated or retyped is put back as released, with an error output that
@@ -42,7 +44,7 @@ from nbgrader.preprocessors import Execute, NbGraderPreprocessor
 from traitlets import Integer
 
 from course_lib.record import MIME
-from course_lib.student import nbgrader_metadata
+from instructor.build.student import nbgrader_metadata
 
 from . import (
     answer_log,  # issue 34
@@ -89,7 +91,7 @@ def refusal(problem):
         f"refusing to run students' code: the confined grading kernel needs bubblewrap, or a "
         f"grader run as root for the privilege drop, and here {problem}. Unconfined, a "
         f"submission runs as you: it can read the solutions "
-        f"(tools/solutions), other submissions and the gradebook, and change them. Install "
+        f"(instructor/answers), other submissions and the gradebook, and change them. Install "
         f"bubblewrap ({INSTALL}; Linux only) and run the command again. Or, only for work you "
         f"trust, grade without confinement: add --ConfinedKernelManager.unconfined=True to "
         f"the command, or set c.ConfinedKernelManager.unconfined = True in nbgrader_config.py "
@@ -135,7 +137,8 @@ class ConfinedExporter(NotebookExporter):
             coursedir.ignore = [*coursedir.ignore, "*", ".*"]
 
     def from_filename(self, filename, resources=None, **kw):
-        """The notebook through the course's intake (:func:`grader.intake.nbgrader_read`): a
+        """The notebook through the course's intake
+        (:func:`instructor.grading.intake.nbgrader_read`): a
         refused file is graded as an empty notebook that carries the note (every grade cell 0)."""
         nb, resources = intake.nbgrader_read(
             filename, getattr(self.parent, "coursedir", None), resources, self.log
@@ -147,7 +150,7 @@ NOTHING = "Nothing was graded: submitted/, autograded/ and gradebook.db are as t
 
 
 class ConfinedExecute(Execute):
-    """nbgrader's Execute with the confined kernel (:mod:`grader.sandbox`).
+    """nbgrader's Execute with the confined kernel (:mod:`instructor.grading.sandbox`).
 
     Output is capped **while it arrives** (:meth:`process_message`): at most
     :attr:`max_output_bytes` of a cell's output messages reach the notebook held in the
@@ -325,8 +328,10 @@ class VerifyRecords(NbGraderPreprocessor):
     """Each exercise check cell keeps its points only on the grader's "correct".
 
     The student is nbgrader's student id resolved to the course's key by the roster
-    (:class:`~grader.id_preprocessors.CourseIdentity`). Where the submitted notebook showed
-    other numbers than the key's (:class:`~grader.id_preprocessors.ShownNumbers`), the feedback
+    (:class:`~instructor.grading.id_preprocessors.CourseIdentity`). Where the submitted notebook
+    showed
+    other numbers than the key's (:class:`~instructor.grading.id_preprocessors.ShownNumbers`), the
+    feedback
     says so at the top and in each exercise concerned, and the student is listed in the
     instructor's identity report (a regrade, not a silent 0); an id the roster does not know is
     graded as given, with a note, and listed too."""
@@ -375,7 +380,8 @@ class VerifyRecords(NbGraderPreprocessor):
             "instructor for a regrade: you are on their list."
         )
 
-    # --- issue 34: what the class report keeps of each answer (grader/answer_log.py) ---
+    # --- issue 34: what the class report keeps of each answer (instructor/grading/answer_log.py)
+    # ---
     def _note(self, name, cell, resources, data=None, result=None):
         who = getattr(self, "_who", None)  # the key whose numbers were graded
         student = who.key if who is not None else resources.get("nbgrader", {}).get("student")

@@ -2,13 +2,15 @@
 cannot start (Gradescope's Docker container, any container whose seccomp profile refuses user
 namespaces, a root JupyterHub). It needs no namespace, no mount and no account.
 
-Root starts the kernel (:mod:`grader.sandbox`'s launcher) and, before ``execve``, becomes a
+Root starts the kernel (:mod:`instructor.grading.sandbox`'s launcher) and, before ``execve``,
+becomes a
 dedicated unprivileged user: uid = gid = :data:`KERNEL_ID` + a slot (``0 <= slot <``
 :data:`SLOTS`, one per kernel running at once, held by a lock of the kernel manager), numbers
 that no account or group may use (checked at start, :func:`problem`). The launcher calls
 ``setgroups([])``, drops every capability from the bounding set, ``setresgid``/``setresuid``
 (which clear the permitted, effective and ambient sets), sets ``PR_SET_NO_NEW_PRIVS`` and the
-limits of :data:`grader.sandbox.LIMITS`, which bind a user that is not root (``RLIMIT_NPROC``
+limits of :data:`instructor.grading.sandbox.LIMITS`, which bind a user that is not root
+(``RLIMIT_NPROC``
 counts every process of that uid). The kernel gets a fresh empty home (and ``TMPDIR`` inside
 it) owned by that uid, mode 0700, removed with every file the uid left in the shared temporary
 folders (:data:`SHARED_TMP`) once the kernel stops, after every process of that uid is killed
@@ -26,7 +28,7 @@ What it may read is decided by permissions, checked empirically before any submi
   refuses and names the folder and the ``chmod`` that opens it;
 - it must read and write nothing in the hidden folders (the course directory with
   ``source/``, ``gradebook.db``, ``submitted/`` and ``autograded/``, the repository or
-  Gradescope's ``source/`` with ``tools/solutions``, the instructor's notebooks and the
+  Gradescope's ``source/`` with ``instructor/answers``, the instructor's notebooks and the
   grader's code): :func:`hidden_problem` walks them as root, keeps every path whose modes let
   "others" through (the kernel is neither owner nor in any group), adds the first entries of
   each folder whatever their modes, and a child process that has dropped to the kernel's uid

@@ -16,7 +16,7 @@ theta + 1
 >>> parse("__import__('os').system('true')")
 Traceback (most recent call last):
     ...
-grader.records.Unreadable: record: a call of something other than a sympy constructor
+instructor.grading.records.Unreadable: record: a call of something other than a sympy constructor
 """
 
 from __future__ import annotations

@@ -1,13 +1,16 @@
 """``make report COURSE=DIR`` or ``make report GRADESCOPE=EXPORT``: what the class got wrong.
 
-    python -m grader.report --course DIR [--assignment psNN ...] [--roster canvas.csv] [--out D]
-    python -m grader.report --gradescope EXPORT [--assignment psNN] [--roster canvas.csv] [--out D]
+    python -m instructor.grading.report --course DIR [--assignment psNN ...] [--roster canvas.csv]
+    [--out D]
+    python -m instructor.grading.report --gradescope EXPORT [--assignment psNN] [--roster
+    canvas.csv] [--out D]
 
 For each problem set, four files in ``--out`` (default ``DIR/report/``, or ``report/`` beside the
 export): ``psNN.html`` and ``psNN.csv``, the instructor's copy (it names students), and
 ``psNN-shared.html`` and ``psNN-shared.csv``, the de-identified copy (no names, no ids, counts
-from 1 to 4 shown as ``<5``). Data: :mod:`grader.report_data`; numbers:
-:mod:`grader.report_stats`; page: :mod:`grader.report_html`. docs/grading.md, "What the class
+from 1 to 4 shown as ``<5``). Data: :mod:`instructor.grading.report_data`; numbers:
+:mod:`instructor.grading.report_stats`; page: :mod:`instructor.grading.report_html`.
+docs/grading.md, "What the class
 got wrong", says how to read it.
 """
 
@@ -25,7 +28,8 @@ __all__ = ["write_reports", "main"]
 
 
 def write_reports(sets, out, roster=None):
-    """Write the four files of each :class:`~grader.report_data.ProblemSet` of ``sets`` into
+    """Write the four files of each :class:`~instructor.grading.report_data.ProblemSet` of ``sets``
+    into
     the folder ``out``; returns the paths written."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)

@@ -2,7 +2,7 @@
 
 - :func:`from_course`: an nbgrader course directory: the points of every grade cell from
   ``gradebook.db`` (nbgrader's :class:`~nbgrader.api.Gradebook`), the grader's notes on each
-  answer from ``answer-log/`` (:mod:`grader.answer_log`).
+  answer from ``answer-log/`` (:mod:`instructor.grading.answer_log`).
 - :func:`from_gradescope`: Gradescope's exports of one programming assignment: *Export
   Submissions* (a ``.zip``, or its folder, holding ``submission_metadata.yml``: per submission
   ``:submitters:`` and ``:results:``, the ``results.json`` the autograder wrote, with each test's

@@ -1,7 +1,8 @@
 r"""The numbers of the class report (issue 34): per exercise, per variant, per problem set.
 
 - **Share right**: a submission is right on an exercise when it has the exercise's full points.
-- **Known mistakes**: the grader's match (:mod:`grader.diagnose`), counted with the bank's hint
+- **Known mistakes**: the grader's match (:mod:`instructor.grading.diagnose`), counted with the
+  bank's hint
   (the default variant's wording).
 - **Unexplained wrong answers**: wrong, no known mistake; grouped by the grader's group key
   (equal values or expressions together), largest group first.
@@ -38,7 +39,7 @@ ALPHA = 0.05
 UPPER_LOWER = 0.27
 MIN_DISCRIMINATION = 10
 SMALL = 5  # the shared copy shows counts from 1 to SMALL - 1 as "<5"
-OTHER = "other-numbers"  # grader.diagnose.OTHER: right for another variant's numbers
+OTHER = "other-numbers"  # instructor.grading.diagnose.OTHER: right for another variant's numbers
 
 
 def fisher_less(a, b, c, d):
@@ -210,7 +211,8 @@ def exercise_stats(ps, name, known=True):
 
 
 def set_stats(ps, known=None):
-    """The :class:`SetStats` of a :class:`grader.report_data.ProblemSet`; ``known(name)``
+    """The :class:`SetStats` of a :class:`instructor.grading.report_data.ProblemSet`;
+    ``known(name)``
     says whether an exercise is of this course version (default: every one is)."""
     known = known or (lambda name: True)
     exercises = [exercise_stats(ps, n, known(n)) for n in ps.exercises]

@@ -35,14 +35,15 @@ does); it only uses the standard library.
 
 **Where bubblewrap cannot start** and the grader runs as root (Gradescope's Docker container,
 any container whose seccomp profile refuses user namespaces, a root hub), the kernel is
-confined by a privilege drop instead (:mod:`grader.privdrop`: a dedicated unprivileged uid,
+confined by a privilege drop instead (:mod:`instructor.grading.privdrop`: a dedicated unprivileged
+uid,
 an empty home, the same cleared environment and limits, the hidden folders closed to it by
 permissions checked at start). :func:`confinement` says which confinement is used here.
 
 **With neither** (macOS, Windows, a Linux machine without bubblewrap or user namespaces where
 the grader is not root) there is no confinement: :func:`confinement_problem` says why, and
 ``nbgrader autograde`` refuses to run students' code
-(:class:`grader.preprocessor.ConfinedExporter`) unless the instructor opts in with
+(:class:`instructor.grading.preprocessor.ConfinedExporter`) unless the instructor opts in with
 ``ConfinedKernelManager.unconfined = True``. Then the kernel runs as the instructor
 (``--unconfined``): the same cleared environment, ``-P``, the installed ``course_lib``
 imported first and the address-space and file-size limits, but it can read and write
@@ -154,7 +155,7 @@ def _choice():
 def confinement():
     """Which confinement runs a student's kernel here: ``"bubblewrap"`` when bwrap can make
     its sandbox, else ``"privdrop"`` when the grader is root and can start the kernel's Python
-    as the kernel's unprivileged uid (:mod:`grader.privdrop`), else None
+    as the kernel's unprivileged uid (:mod:`instructor.grading.privdrop`), else None
     (:func:`confinement_problem` says why).
 
     Examples
@@ -178,7 +179,7 @@ def confinement_problem():
 
 def hidden_problem(hide):
     """Privdrop only: why the kernel's uid could reach something in the folders ``hide``, or
-    None (tried as that uid, :func:`grader.privdrop.hidden_problem`); the Python, the
+    None (tried as that uid, :func:`instructor.grading.privdrop.hidden_problem`); the Python, the
     environment and the kernel's copy of the installed ``course_lib`` are exposed."""
     import course_lib
 
@@ -267,7 +268,7 @@ def _limit(unconfined=False):
         except (ValueError, OSError) as exc:  # macOS refuses some (RLIMIT_AS)
             if not unconfined:
                 raise
-            print(f"grader.sandbox: {name} not set here: {exc}", file=sys.stderr)
+            print(f"instructor.grading.sandbox: {name} not set here: {exc}", file=sys.stderr)
 
 
 def _exec_unconfined(scratch, kernel, python, path, student=""):
@@ -281,7 +282,8 @@ def _exec_unconfined(scratch, kernel, python, path, student=""):
 
 
 def _exec_privdrop(args, kernel):
-    """The kernel as the unprivileged ``args.privdrop_uid`` (:mod:`grader.privdrop`); root."""
+    """The kernel as the unprivileged ``args.privdrop_uid``
+    (:mod:`instructor.grading.privdrop`); root."""
     uid, home = args.privdrop_uid, args.home
     # the scratch folder: the kernel reads its connection file and binds its ipc sockets there
     # until it answers, then the kernel manager seals it (seal_scratch)
@@ -321,7 +323,7 @@ def main(argv=None):
         os.dup2(quiet, 1)
         _exec_unconfined(args.scratch, kernel, args.python, args.pythonpath, args.student_id)
     if shutil.which("bwrap") is None:
-        print(f"grader.sandbox: bwrap not found: {INSTALL}", file=sys.stderr)
+        print(f"instructor.grading.sandbox: bwrap not found: {INSTALL}", file=sys.stderr)
         return 2
     os.dup2(quiet, 1)
     cmd = bwrap_command(

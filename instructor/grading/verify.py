@@ -1,8 +1,9 @@
 r"""The grader's verdict on a recorded answer, decided in the instructor's process.
 
-The expected answers are the instructor's reference solutions, ``tools/solutions/chNN.py``,
+The expected answers are the instructor's reference solutions, ``instructor/answers/chNN.py``,
 run here (after the chapter's set-up code) and never shipped. A recorded answer
-(:mod:`course_lib.record`) is read with the whitelist of :mod:`grader.records`, then read again
+(:mod:`course_lib.record`) is read with the whitelist of :mod:`instructor.grading.records`, then
+read again
 by the grader's own import of ``course_lib`` (exact types, bounded sizes), and compared:
 
 - **choice**: the set of letters;
@@ -19,7 +20,6 @@ The verdict is ``"correct"`` or another status with a one-line note for the inst
 
 from __future__ import annotations
 
-import importlib.util
 import signal
 import threading
 from contextlib import contextmanager
@@ -38,13 +38,15 @@ from course_lib.exercises._check import form_violation
 from course_lib.exercises._reading import Rejected, read_answer, read_choice
 from course_lib.exercises._variants import table, variant_of
 from course_lib.tolerance import TOL
+from instructor import answers
 
 from .records import Unreadable, parse
 
 __all__ = ["Verdict", "verdict", "expected", "fresh_points", "student_parameters", "SOLUTIONS"]
 
-ROOT = Path(__file__).resolve().parents[1]
-SOLUTIONS = ROOT / "tools" / "solutions"
+ROOT = Path(__file__).resolve().parents[2]
+#: The folder of the answers (:mod:`instructor.answers`), which the confined kernel never sees.
+SOLUTIONS = ROOT / "instructor" / "answers"
 ROUNDS = 2
 NPOINTS = 40  # fresh points per round
 SECONDS = 20  # one verdict at most (the reading bounds keep it far below)
@@ -62,13 +64,8 @@ class Verdict:
         return self.status == "correct"
 
 
-@cache
 def _solution_code(chapter):
-    path = SOLUTIONS / f"{exercise_bank.CHAPTERS[chapter]}.py"
-    spec = importlib.util.spec_from_file_location(f"_grader_solutions_{chapter}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module.SOLUTIONS
+    return answers.solutions(chapter)
 
 
 def _readable(spec):

@@ -4,7 +4,7 @@ What counts as a worked solution (the *needles*):
 
 * every line between nbgrader's solution markers in the instructor's notebooks
   (``notebooks/*.ipynb`` and ``problem_sets/*.ipynb``), and every line of every worked
-  solution in ``tools/solutions/*.py`` (the string values of their ``SOLUTIONS`` dicts, read
+  solution in ``instructor/answers/*.py`` (the string values of their ``SOLUTIONS`` dicts, read
   with ``ast``, never imported);
 * of a line with a trailing comment, its code alone too (a copy without the comment is the
   same leak), and of an ``answer_x = <expression>`` line, the expression alone (the issue's
@@ -29,10 +29,12 @@ The gate then reads every file of the student edition's work tree, every blob an
 message of its whole git history, every member of each wheel and every file of the website
 (HTML also with its tags taken out, JSON and notebooks also by their strings) and fails on:
 a needle found (naming the file, the line and where the solution comes from), a line with
-one of nbgrader's markers, a folder named ``solutions``, and a class roster (a file named
+one of nbgrader's markers, a folder named ``solutions``, ``answers`` or ``instructor``, and a class
+roster (a file named
 ``roster*``, or a CSV with a Canvas gradebook's header): students' ids stay with the instructor.
 
-Command line: ``python release/leak_gate.py ROOT STUDENT_DIR DIST_DIR SITE_DIR`` (exit 1 on
+Command line: ``python -m instructor.release.leak_gate ROOT STUDENT_DIR DIST_DIR SITE_DIR`` (exit 1
+on
 any hit, listing up to 50).
 """
 
@@ -54,7 +56,9 @@ MARKER = re.compile(r"(BEGIN|END) (SOLUTION|HIDDEN TESTS|MARK SCHEME)")
 PUNCTUATION = re.compile(r"^[\s()\[\]{},:;]*$")
 PREFILL = re.compile(r"^answer_\w+\s*=\s*None$")
 ANSWER_RHS = re.compile(r"^answer_\w+\s*=\s*(.+)$")
-SOLUTION_DIRS = {"solutions", "solution"}
+#: Folder names that nothing students get may hold: the instructor's answers live in
+#: instructor/answers/ (issue 36), and the instructor package never ships.
+SOLUTION_DIRS = {"solutions", "solution", "answers", "instructor"}
 ROSTER_HEADER = re.compile(r"^\ufeff?\"?Student\"?,.*\bSIS (User|Login) ID\b", re.M)
 _TAG = re.compile(r"<[^>]+>")
 
@@ -106,7 +110,7 @@ def _notebook_lines(path):
 
 
 def _solutions_file_lines(path):
-    """Lines of the string values of ``SOLUTIONS = {...}`` in a tools/solutions module."""
+    """Lines of the string values of ``SOLUTIONS = {...}`` in a instructor/answers module."""
     tree = ast.parse(path.read_text(encoding="utf-8"))
     found = []
     for node in ast.walk(tree):
@@ -116,7 +120,7 @@ def _solutions_file_lines(path):
             for key, value in zip(node.value.keys, node.value.values):
                 if isinstance(value, ast.Constant) and isinstance(value.value, str):
                     name = key.value if isinstance(key, ast.Constant) else "?"
-                    where = f"tools/solutions/{path.name} exercise {name}"
+                    where = f"instructor/answers/{path.name} exercise {name}"
                     found += [(line, where) for line in value.value.splitlines()]
     return found
 
@@ -157,7 +161,7 @@ def collect_needles(root):
             raw += inside
             public |= outside
             needles.regions += regions
-    for path in sorted((root / "tools" / "solutions").glob("*.py")):
+    for path in sorted((root / "instructor" / "answers").glob("ch[0-9][0-9].py")):
         raw += _solutions_file_lines(path)
     public_text = "\n".join(sorted(public))
     for line, where in raw:
@@ -221,7 +225,8 @@ def _right_records(text):
 
 
 def _roster(name, data):
-    """Whether a file looks like a class roster (grader/identity.py): a file named roster*, or
+    """Whether a file looks like a class roster (instructor/grading/identity.py): a file named
+    roster*, or
     a CSV with a Canvas gradebook's identity header. Students never get one."""
     base = name.replace("\\", "/").rsplit("/", 1)[-1].lower()
     if base.startswith("roster"):
@@ -336,7 +341,7 @@ def summary(needles, report):
     skipped = ", ".join(f"{n} {reason}" for reason, n in sorted(needles.skipped.items()))
     return (
         f"leak gate: {len(needles.lines)} solution lines from {needles.regions} solution "
-        f"regions and tools/solutions (skipped: {skipped}); scanned {report.files} files, "
+        f"regions and instructor/answers (skipped: {skipped}); scanned {report.files} files, "
         f"{report.blobs} history blobs, {report.members} wheel members, "
         f"{report.bytes / 1e6:.1f} MB: {len(report.hits)} hits"
     )

@@ -1,10 +1,13 @@
 """``make release``: everything students get, in build/release/, checked by the leak gate.
 
-1. ``student/``: the student edition, a git repository of its own (release/student_edition.py);
+1. ``student/``: the student edition, a git repository of its own
+(instructor/release/student_edition.py);
 2. ``dist/``: the course as a wheel, built from a clone of that repository (so it holds only
    what the edition holds: no instructor tool), with pip;
-3. ``site/``: the student website, built from the edition's notebooks (site/build.py --from);
-4. the leak gate (release/leak_gate.py) over all three; any hit fails the release (exit 1).
+3. ``site/``: the student website, built from the edition's notebooks (``python -m
+instructor.build.website --from``);
+4. the leak gate (instructor/release/leak_gate.py) over all three; any hit fails the release (exit
+1).
 
 Prints the time of each step, the sizes and the gate's counts, and writes them to
 build/release/REPORT.txt. ``--skip-site`` leaves the website out (the tests of the release use
@@ -21,13 +24,11 @@ import tempfile
 import time
 from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent
-sys.path.insert(0, str(HERE))
-sys.path.insert(0, str(ROOT / "site"))
+from instructor.build import website
+from instructor.release import leak_gate, student_edition
 
-import leak_gate  # noqa: E402
-import student_edition  # noqa: E402
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[1]
 
 
 def build_wheel(student, dist):
@@ -89,9 +90,7 @@ def release(out, with_site=True):
     start = time.monotonic()
     shutil.rmtree(site, ignore_errors=True)
     if with_site:
-        import build as site_build
-
-        site_build.build(student_dir=student, out=site)
+        website.build(student_dir=student, out=site)
     else:
         site.mkdir(parents=True)
     times["site"] = time.monotonic() - start

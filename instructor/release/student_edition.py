@@ -3,14 +3,16 @@
 Built from the instructor's tree into ``build/release/student/``:
 
 * ``notebooks/`` and ``problem_sets/`` (when there): every solution region replaced by its stub
-  (:func:`course_lib.student.student_notebook`); a chapter keeps the outputs of its reading part
+  (:func:`instructor.build.student.student_notebook`); a chapter keeps the outputs of its reading
+  part
   (strict nbval compares them), every cell from the first nbgrader cell on is cleared;
-* ``course_lib/`` without the instructor's tool that makes student copies (``student.py``);
+* ``course_lib/`` (all of it: the instructor's tools are in the ``instructor`` package);
 * ``tests/``: the test files that need no instructor tool and name no exercise or answer
   (:func:`student_tests` says which are left out and why), with ``conftest.py`` and the nbval
   sanitizer;
 * its own README, Makefile (``make lab``, ``make test``), conftest.py, .gitignore and
-  ``requirements-test.txt`` (from ``release/student_template/``), the student's environment,
+  ``requirements-test.txt`` (from ``instructor/release/student_template/``), the student's
+  environment,
   ``binder/``, ``pyproject.toml`` (its pytest paths: tests, course_lib, the notebooks) and the
   licence;
 * a fresh git repository, branch ``student`` (the branch the launch links open), one commit.
@@ -21,27 +23,22 @@ from __future__ import annotations
 import re
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import nbformat
 
-ROOT = Path(__file__).resolve().parents[1]
+from instructor.build import course_links
+from instructor.build.student import student_notebook
+
+ROOT = Path(__file__).resolve().parents[2]
 TEMPLATE = Path(__file__).resolve().with_name("student_template")
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tools"))
-
-import course_links  # noqa: E402
-
-from course_lib.student import student_notebook  # noqa: E402
 
 NOTEBOOK_DIRS = ("notebooks", "problem_sets")
-INSTRUCTOR_MODULES = ("student.py",)  # course_lib modules students do not get
 TEST_TOOLS = ("pytest", "hypothesis", "nbval", "scipy")  # requirements-test.txt, same pins
 # A test file that matches is left out, for the reason in the group's name.
 INSTRUCTOR_TEST = re.compile(
     r"(?P<tool>\bnbgrader\b|\bgrader\b|playwright|\bruff\b|\btools\b|\be2e\b|\"site\""
-    r"|course_lib\.student|import student\b)"
+    r"|\binstructor(?=[./]\w| import\b)|course_lib\.student|import student\b)"
     r"|(?P<answers>course_lib\.exercises|exercise_bank|import exercises\b|\banswer_[a-z]"
     r"|solutions\b|SOLUTIONS)"
 )
@@ -146,7 +143,7 @@ def build_student_edition(root, out):
     root, out = Path(root), Path(out)
     shutil.rmtree(out, ignore_errors=True)
     out.mkdir(parents=True)
-    ignore = shutil.ignore_patterns("__pycache__", "*.pyc", *INSTRUCTOR_MODULES)
+    ignore = shutil.ignore_patterns("__pycache__", "*.pyc")
     shutil.copytree(root / "course_lib", out / "course_lib", ignore=ignore)
     shutil.copytree(root / "binder", out / "binder", ignore=ignore)
     notebooks = _notebooks(root, out)

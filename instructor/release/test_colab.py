@@ -1,4 +1,4 @@
-"""A chapter on its own, the way Colab runs it (CI: ``pytest release/test_colab.py``).
+"""A chapter on its own, the way Colab runs it (CI: ``pytest instructor/release/test_colab.py``).
 
 Outside ``make test`` (it builds a venv from PyPI: 3 to 6 minutes on a loaded 2-core machine),
 like site/test_site.py; marked ``colab``.
@@ -26,14 +26,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "release"))
-sys.path.insert(0, str(ROOT / "tools"))
+from instructor.build import notebooks as nbtool
+from instructor.release import make_release, student_edition
 
-import make_release  # noqa: E402
-import student_edition  # noqa: E402
-
-import notebooks as nbtool  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
 
 pytestmark = [pytest.mark.colab, pytest.mark.notebook_exec]
 COLAB_DEFAULTS = ("numpy", "sympy", "matplotlib", "ipykernel", "ipywidgets")

@@ -1,7 +1,9 @@
 """Build the course website (``make site``; ``make site SOLUTIONS=1``; ``make release``).
 
+    python -m instructor.build.website [--solutions] [--from DIR] [--out DIR]
+
 1. The pages: the chapters (``notebooks/``) and the problem sets (``problem_sets/``, when there).
-   By default their student copies (``course_lib.student``: solutions replaced by stubs) into
+   By default their student copies (``instructor.build.student``: solutions replaced by stubs) into
    ``build/site/``; ``--from DIR`` takes them as they are from a student edition (``make
    release``: ``build/release/student``); ``--solutions`` takes the instructor's notebooks as
    they are and writes to ``build/site-instructor/`` (never over the student site), with a
@@ -9,10 +11,10 @@
 2. Each notebook is prepared: the setup cell is dropped (the site needs no set-up), a line of
    launch links is put under the title, stub and check cells are tagged ``raises-exception`` and
    ``remove-output`` so that executing does not stop on them and shows no traceback.
-3. Each notebook is executed and cleaned by tools/notebooks.py (no stall after widget cells,
+3. Each notebook is executed and cleaned by instructor/build/notebooks.py (no stall after widget cells,
    palette PNGs). An explorer's output keeps its still picture (the widget view goes: without a
    kernel no slider moves anything) and gets one line under it saying why it is still; every
-   figure gets alt text: its caption as plain text (tools/alt_text.py).
+   figure gets alt text: its caption as plain text (instructor/build/alt_text.py).
 4. Sphinx + myst-nb render the pages offline: MathJax comes from the npm package installed in
    build/site-deps/, copied into the site's ``_static/``; site/static/course.css keeps every
    page within the window (wide formulas, code and outputs scroll inside their own box).
@@ -30,15 +32,14 @@ from pathlib import Path
 
 import nbformat
 
-ROOT = Path(__file__).resolve().parents[1]
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(ROOT / "tools"))
+from course_lib.plotting.display import figure_alt_and_png
+from instructor.build import course_links
+from instructor.build import notebooks as nbtool
+from instructor.build.alt_text import figure_alt
 
-import course_links  # noqa: E402
-from alt_text import figure_alt  # noqa: E402
-
-import notebooks as nbtool  # noqa: E402
-from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
+ROOT = Path(__file__).resolve().parents[2]
+#: The website's own files: Sphinx's conf.py, templates/, static/ (and its browser tests).
+HERE = ROOT / "site"
 
 BUILD = ROOT / "build"
 DEPS = BUILD / "site-deps"
@@ -113,7 +114,7 @@ def source_notebooks(src, solutions, student_dir):
                 [
                     sys.executable,
                     "-m",
-                    "course_lib.student",
+                    "instructor.build.student",
                     str(ROOT / folder),
                     str(src),
                     "--force",

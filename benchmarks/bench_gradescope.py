@@ -10,8 +10,7 @@ Each submission is graded twice, by turns, both through ``tests/docker_seccomp.p
 needs ``python3-seccomp``) in its Gradescope-like view of the file system: with bubblewrap
 (``--view-only``: the view, no constraint) and as root under Docker's seccomp constraint, where
 bubblewrap cannot start and the privilege drop (``instructor/grading/privdrop.py``) confines the
-kernel.
-Both pay the view's own cost (a mount namespace, the checkout's overlay, a Python start; the
+kernel. Both pay the view's own cost (a mount namespace, the checkout's overlay, a Python start; the
 launcher alone is timed and printed). Goal: privdrop at most 1.10 x bubblewrap, as the median
 over submissions of privdrop's wall time over bubblewrap's for the same submission (graded one
 after the other: the load of a shared machine evens out).

@@ -3,8 +3,7 @@ the pages).
 
 Everything the pages load is served from the site itself: MathJax 3 comes from the npm package
 that instructor/build/website.py installs into build/site-deps/, the theme is Sphinx's own
-(alabaster). The
-instructor's edition (COURSE_SITE_EDITION=instructor) has a banner on every page.
+(alabaster). The instructor's edition (COURSE_SITE_EDITION=instructor) has a banner on every page.
 """
 
 import os
@@ -37,8 +36,7 @@ html_show_sourcelink = False
 html_copy_source = False  # no _sources/ copies of the notebooks: the pages are the site
 
 # The notebooks are executed by instructor/build/website.py (instructor/build/notebooks.py, which
-# does not stall on
-# widget cells); myst-nb only renders them.
+# does not stall on widget cells); myst-nb only renders them.
 nb_execution_mode = "off"
 nb_render_markdown_format = "myst"  # Markdown(...) outputs (tables) are parsed, math included
 myst_enable_extensions = ["dollarmath", "amsmath"]

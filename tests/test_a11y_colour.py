@@ -17,8 +17,8 @@ from instructor.build import figure_audit
 from instructor.build.figure_audit import contrast, delta_e, simulate
 
 # Machado et al. 2009 (instructor/build/figure_audit.py), severity 1.0: the two red-green
-# deficiencies,
-# which the frame palette is made for (tritanopia: instructor/build/figure_audit.py on every figure)
+# deficiencies, which the frame palette is made for (tritanopia: instructor/build/figure_audit.py on
+# every figure)
 MACHADO = {k: figure_audit.MACHADO[k] for k in ("protanopia", "deuteranopia")}
 
 MIN_DELTA_E = 20.0  # CIE76 distance in L*a*b*: about 2.3 is "just noticeable"; 20 is clearly apart

@@ -209,8 +209,8 @@ def test_chapter_links_have_meaningful_text():
 
 def test_alt_text_tool_gives_a_stale_show_call_its_caption_and_keeps_the_rest():
     """instructor/build/alt_text.py --apply: the call's text becomes the caption; code around it
-    (with
-    non-ASCII before the call, where ast counts bytes) is kept; a second run changes nothing."""
+    (with non-ASCII before the call, where ast counts bytes) is kept; a second run changes
+    nothing."""
     from instructor.build.alt_text import rewrite
 
     code = 'label = "θ = 30°"\nplot.show(\n    "Figure: old text, cut off at"\n)\nprint(label)'

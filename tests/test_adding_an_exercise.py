@@ -3,8 +3,7 @@
 1. a new exercise in the bank (``course_lib/exercise_bank/ch01.py``), 2. its worked solution in
 ``instructor/answers/ch01.py``, 3. the commands of ``make exercises`` (fingerprints, then
 ``instructor/build/sync_exercises.py``). The copy's problem set then holds the new exercise after
-the
-others, the instructor's hidden test of exercise 1.1 is still there, and in a fresh Python the
+the others, the instructor's hidden test of exercise 1.1 is still there, and in a fresh Python the
 new check accepts the worked solution and refuses a blank answer and a wrong one.
 """
 

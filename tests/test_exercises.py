@@ -167,8 +167,7 @@ def test_exercises_rejects_an_unknown_chapter_and_check_an_unknown_name():
 
 def test_stored_fingerprints_are_those_of_the_reference_solutions():
     """instructor/build/exercise_fingerprints.py --check on a sample: every exercise's default and
-    8 rows
-    of every variant table, recomputed from the solutions, are what the package holds (the
+    8 rows of every variant table, recomputed from the solutions, are what the package holds (the
     whole of 22 tables of 1,024 rows takes minutes; ``--check`` does it)."""
     stored = EX._fingerprints()
     built = F.build(sample=lambda n: range(1, n, n // 8), jobs=1)

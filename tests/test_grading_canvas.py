@@ -1,7 +1,6 @@
 """``make grades-canvas`` (instructor/grading/canvas.py) on a real nbgrader gradebook made with
-nbgrader's
-own Gradebook API: the Canvas import layout, missing submissions blank and listed (never 0),
-unknown students listed, a Canvas roster export's ids and column names reused."""
+nbgrader's own Gradebook API: the Canvas import layout, missing submissions blank and listed (never
+0), unknown students listed, a Canvas roster export's ids and column names reused."""
 
 from __future__ import annotations
 

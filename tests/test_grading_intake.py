@@ -1,8 +1,7 @@
 """The intake of a submission (instructor/grading/intake.py, instructor/grading/collect.py, issue
-32): only a regular
-file of one name inside the submission folder is read, its size checked before reading; the
-Gradescope runner's choice of notebook and its notes for bad input, without nbgrader runs
-(those are in test_grading_gradescope.py and test_grading_intake_nbgrader.py)."""
+32): only a regular file of one name inside the submission folder is read, its size checked before
+reading; the Gradescope runner's choice of notebook and its notes for bad input, without nbgrader
+runs (those are in test_grading_gradescope.py and test_grading_intake_nbgrader.py)."""
 
 from __future__ import annotations
 
@@ -218,9 +217,15 @@ def test_the_zip_of_a_set_holds_only_its_chapters_solutions():
 
     for ps, chapter in (("ps01", "ch01"), ("ps04", "ch04")):
         names = gradescope.members(ps)
-        assert [n for n in names if n.startswith("instructor/answers/")] == [
+        assert [n for n in names if n.startswith("instructor/answers/ch")] == [
             f"instructor/answers/{chapter}.py"
         ]
+        # beside it, the loader and the draws' shared code only: no answer in either
+        assert {n for n in names if n.startswith("instructor/answers/")} == {
+            f"instructor/answers/{chapter}.py",
+            "instructor/answers/__init__.py",
+            "instructor/answers/common.py",
+        }
         assert [n for n in names if n.startswith("problem_sets/")] == [
             f"problem_sets/{p.name}" for p in (ROOT / "problem_sets").glob(f"{ps}_*.ipynb")
         ]

@@ -2,8 +2,7 @@
 ``nbgrader autograde`` of ``submitted/`` with the course's configuration
 (instructor/grading/intake.py,
 instructor/grading/collect.py, ConfinedExporter). A submission that is not a regular file of one
-name
-inside the student's folder was graded as the student's own notebook: full marks for a link
+name inside the student's folder was graded as the student's own notebook: full marks for a link
 to the instructor's solved copy. Real nbgrader, marked ``slow_grading`` (CI's make test-slow).
 """
 

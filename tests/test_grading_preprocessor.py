@@ -1,6 +1,6 @@
 """The course's nbgrader preprocessors on their own (instructor/grading/preprocessor.py): the
-output cap,
-grading metadata a student added, and a kernel that dies in an answer cell (issue 17)."""
+output cap, grading metadata a student added, and a kernel that dies in an answer cell (issue
+17)."""
 
 from __future__ import annotations
 

@@ -4,8 +4,7 @@ read strictly, and no check says ✓ on numbers that may not be the student's.
 course_lib's side (:mod:`course_lib.exercises._identity`): normalisation, the e-mail domain,
 the precedence of the ids, the check without an id. The grader's side
 (:mod:`instructor.grading.identity`, :mod:`instructor.grading.gradescope_run`): Canvas and plain
-rosters, their
-errors, the unknown id, the identity report, the leak gate.
+rosters, their errors, the unknown id, the identity report, the leak gate.
 """
 
 from __future__ import annotations

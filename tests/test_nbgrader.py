@@ -1,16 +1,14 @@
 """The real nbgrader round trip (nbgrader 0.9.6, pinned in environment.txt).
 
 In a course directory written by ``make course`` (instructor/grading/course.py: the confined kernel
-and the
-grader's preprocessors in its nbgrader_config.py):
+and the grader's preprocessors in its nbgrader_config.py):
 
 1. ``nbgrader generate_assignment`` accepts every problem set as it is (no marker word in the
    prose, balanced markers, unique grade ids) and releases copies without the solutions or the
    hidden tests.
 2. ``nbgrader autograde`` of the problem sets (``problem_sets/``, written by
    instructor/build/sync_exercises.py) gives the instructor's notebooks full marks, more than 0,
-   and the
-   released copies 0; an instructor's hidden test in a check cell runs.
+   and the released copies 0; an instructor's hidden test in a check cell runs.
 3. ``nbgrader validate`` fails on a released (blank) copy with one line per failed check that
    holds the whole hint, and no output of a check cell reads as a (partial) score.
 """

@@ -1,8 +1,7 @@
 """The chapter and problem-set notebooks stay lean and stable, and open wherever a class works.
 
 `make notebooks` (instructor/build/notebooks.py) puts the setup cell first, executes and cleans
-every
-chapter and problem set; these tests check its result on the committed notebooks, one property
+every chapter and problem set; these tests check its result on the committed notebooks, one property
 at a time, and the tool itself on small notebooks.
 """
 

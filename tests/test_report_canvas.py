@@ -1,7 +1,6 @@
 """Canvas grades from Gradescope's exported scores (instructor/grading/canvas_gradescope.py) and
-missing
-work as 0 or blank on both paths (issue 34): the Canvas layout, a roster's ids, an unknown id,
-bad input."""
+missing work as 0 or blank on both paths (issue 34): the Canvas layout, a roster's ids, an unknown
+id, bad input."""
 
 from __future__ import annotations
 

@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 from jupyter_client.manager import start_new_kernel
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output, new_raw_cell
 
-from course_lib import student as student_module
+from instructor.build import student as student_module
 from instructor.build.student import (
     CELL_RUN_STATE,
     CODE_STUB,

@@ -7,8 +7,7 @@ sanitizer keeps, trusted or not), plus the alt text as the ``text/plain`` of the
 of the picture, no ``image/png`` beside it. The PNG is palette-coded (as ``make notebooks``
 stores every figure) and its bytes depend only on the figure, so a re-run gives the same HTML
 and strict nbval can compare it. The website (``instructor/build/website.py``) turns such an output
-back into
-an ``image/png`` with the same alt text.
+back into an ``image/png`` with the same alt text.
 """
 
 import base64

@@ -1,10 +1,10 @@
 """The course's public address, read from one place, and every link made from it.
 
 The repository URL lives only in ``[project.urls]`` of ``pyproject.toml`` (key ``Repository``).
-From it come the setup cell of every notebook (``instructor/build/notebooks.py``), the launch links of the
-README (the block between the ``launch-links`` markers, rewritten by this script) and the launch
-buttons of the course website (``site/conf.py``). While it is unset, all of them say so instead
-of pointing nowhere.
+From it come the setup cell of every notebook (``instructor/build/notebooks.py``), the launch links
+of the README (the block between the ``launch-links`` markers, rewritten by this script) and the
+launch buttons of the course website (``site/conf.py``). While it is unset, all of them say so
+instead of pointing nowhere.
 
 Students open the *student edition*: the branch ``student`` of the same repository, which holds
 the copies ``make student`` builds (README, "Releasing the student edition").
@@ -24,7 +24,9 @@ from urllib.parse import quote
 
 ROOT = Path(__file__).resolve().parents[2]
 STUDENT_BRANCH = "student"
-BEGIN = "<!-- launch-links:begin (written by instructor/build/course_links.py from pyproject.toml) -->"
+BEGIN = (
+    "<!-- launch-links:begin (written by instructor/build/course_links.py from pyproject.toml) -->"
+)
 END = "<!-- launch-links:end -->"
 UNSET = (
     "not published yet: set `Repository` in `[project.urls]` of `pyproject.toml`, "

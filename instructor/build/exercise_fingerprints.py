@@ -1,6 +1,6 @@
 """Make the checker's fingerprints from the instructor's reference solutions.
 
-    python -m instructor.build.exercise_fingerprints          # course_lib/exercise_bank/fingerprints.json
+    python -m instructor.build.exercise_fingerprints          # exercise_bank/fingerprints.json
     python -m instructor.build.exercise_fingerprints --check  # exit 1 if that file is out of date
 
 For every exercise of the bank, runs the chapter's set-up code and the reference solution of
@@ -269,12 +269,15 @@ def _solutions_cached(chapter):
 
 def variant_rows(ex):
     """The rows of the variant table of ``ex`` (``[]`` without variants), read from the file
-    ``instructor/build/variant_tables.py`` writes; every row is fingerprinted, variants on or off."""
+    ``instructor/build/variant_tables.py`` writes; every row is fingerprinted, variants on or
+    off."""
     if ex.variants is None:
         return []
     rows = _tables().get(ex.variants.key)
     if not rows or rows[0] != ex.variants.default:
-        raise ValueError(f"{ex.name}: no variant table or a stale one: run instructor/build/variant_tables.py")
+        raise ValueError(
+            f"{ex.name}: no variant table or a stale one: run instructor/build/variant_tables.py"
+        )
     return rows
 
 

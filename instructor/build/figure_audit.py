@@ -2,9 +2,10 @@
 
     python -m instructor.build.figure_audit [NOTEBOOK ...]   (default: notebooks/ and problem_sets/)
 
-Each notebook is run (a copy, instructor/build/notebooks.py's kernel) with ``plotting.show`` audited: every
-figure it shows is read artist by artist before it becomes a PNG, and :func:`figure_problems`
-says what a reader with a colour-vision deficiency, or with low contrast sensitivity, would miss:
+Each notebook is run (a copy, instructor/build/notebooks.py's kernel) with ``plotting.show``
+audited: every figure it shows is read artist by artist before it becomes a PNG, and
+:func:`figure_problems` says what a reader with a colour-vision deficiency, or with low contrast
+sensitivity, would miss:
 
 * a line, arrow or marker below 3:1 on its axes' background (1.4.11), a text below 4.5:1 (1.4.3);
 * two series (lines, arrows, markers) with the same line style and marker whose colours are

@@ -1,7 +1,7 @@
 """Execute and clean the course notebooks so that a re-run changes nothing in their JSON.
 
-``make notebooks`` runs ``python -m instructor.build.notebooks --apply notebooks/[0-9]*.ipynb``. For every
-notebook, ``--apply``:
+``make notebooks`` runs ``python -m instructor.build.notebooks --apply notebooks/[0-9]*.ipynb``.
+For every notebook, ``--apply``:
 
 1. puts the setup cell first (inserting it, or replacing an older version of it): a no-op where
    ``course_lib`` imports; in a checkout it imports the library from the repository root above

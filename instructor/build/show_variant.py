@@ -1,6 +1,7 @@
 """What one student's problem set asks and its answers (instructor side: it runs the solutions).
 
-    python -m instructor.build.show_variant STUDENT psNN [--roster R]  # make variant STUDENT=id PS=psNN
+    python -m instructor.build.show_variant STUDENT psNN [--roster R]
+    # or: make variant STUDENT=id PS=psNN
 
 For each exercise of the problem set with variants: the variant the student gets (the same id
 the grader is given: the nbgrader student id, the JupyterHub user or the e-mail, resolved to
@@ -18,11 +19,11 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[2]
-
 from course_lib.exercises import exercises, variant, variants_enabled
 from instructor.grading.identity import load
 from instructor.grading.verify import expected
+
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def report(student, chapter, roster=()):

@@ -3,8 +3,8 @@
     python -m instructor.build.sync_exercises          # every chapter of the bank
     python -m instructor.build.sync_exercises 1 3      # chapters 1 and 3 only
 
-``make exercises`` runs it after ``instructor/build/exercise_fingerprints.py`` and before executing the
-problem sets. For chapter N (reading notebook ``notebooks/NN_<slug>.ipynb``) it writes:
+``make exercises`` runs it after ``instructor/build/exercise_fingerprints.py`` and before executing
+the problem sets. For chapter N (reading notebook ``notebooks/NN_<slug>.ipynb``) it writes:
 
 - ``problem_sets/psNN_<slug>.ipynb``, the nbgrader source notebook of the chapter's graded
   exercises: a title, how the exercises work, the set-up cell (the imports of ``SETUP`` in the
@@ -34,12 +34,12 @@ from pathlib import Path
 
 import nbformat
 
-ROOT = Path(__file__).resolve().parents[2]
-
 from course_lib import exercise_bank
 from course_lib.exercises import exercises
-from instructor.build.student import nbgrader_metadata
 from instructor.build.exercise_fingerprints import solutions
+from instructor.build.student import nbgrader_metadata
+
+ROOT = Path(__file__).resolve().parents[2]
 
 CHAPTERS_DIR = ROOT / "notebooks"
 PROBLEM_SETS_DIR = ROOT / "problem_sets"

@@ -7,8 +7,8 @@ lists and numbers, as the statement shows them, JSON-ready), and a function that
 set is unfit: a degenerate case that would make the exercise
 trivial, or a known mistake that would give the right answer (so its hint could never show).
 :data:`DRAWS` collects them; :func:`problems` and :func:`draw` use it.
-A draw is redrawn until it has no problem; ``instructor/build/variant_tables.py`` writes the vetted table
-and tests/test_variant_draws.py checks 1,000 seeds per key.
+A draw is redrawn until it has no problem; ``instructor/build/variant_tables.py`` writes the vetted
+table and tests/test_variant_draws.py checks 1,000 seeds per key.
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
 """Write the vetted variant tables: ``course_lib/exercise_bank/variants.json``.
 
-    python -m instructor.build.variant_tables          # write the tables (variants on or off, as they were)
+    python -m instructor.build.variant_tables          # the tables (variants on/off as they were)
     python -m instructor.build.variant_tables --on     # each student their own numbers
-    python -m instructor.build.variant_tables --off    # the same tables, everyone the default numbers
-    python -m instructor.build.variant_tables --check  # exit 1 if the file is not what this would write
+    python -m instructor.build.variant_tables --off    # the same tables, everyone the default
+    python -m instructor.build.variant_tables --check  # exit 1 if the file is out of date
     python -m instructor.build.variant_tables --roster ids.txt  # tune the assignment to a class
 
 For every variant key of the bank (an exercise's ``Variants.key``), row 0 is the exercise's
@@ -25,11 +25,9 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-
-from instructor.build import variant_draws
-
 from course_lib.exercises import EXERCISES
 from course_lib.exercises._variants import TABLE_FILE, _hashes, _row, course_key
+from instructor.build import variant_draws
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -111,8 +109,8 @@ def tune_spread(tables, ids):
 def read_roster(path):
     """The course keys of a roster, made as the kernel makes them (``course_key``): the
     instructor's class roster (a ``.csv``: a Canvas gradebook export or ``key,alias,...``, read
-    by :mod:`instructor.grading.identity`, which refuses a row it cannot trust), or one id per line (blank
-    lines and lines starting with # skipped)."""
+    by :mod:`instructor.grading.identity`, which refuses a row it cannot trust), or one id per line
+    (blank lines and lines starting with # skipped)."""
     from course_lib.exercises._identity import course_key
 
     if str(path).endswith(".csv"):

@@ -11,7 +11,8 @@
 2. Each notebook is prepared: the setup cell is dropped (the site needs no set-up), a line of
    launch links is put under the title, stub and check cells are tagged ``raises-exception`` and
    ``remove-output`` so that executing does not stop on them and shows no traceback.
-3. Each notebook is executed and cleaned by instructor/build/notebooks.py (no stall after widget cells,
+3. Each notebook is executed and cleaned by instructor/build/notebooks.py (no stall after widget
+cells,
    palette PNGs). An explorer's output keeps its still picture (the widget view goes: without a
    kernel no slider moves anything) and gets one line under it saying why it is still; every
    figure gets alt text: its caption as plain text (instructor/build/alt_text.py).

@@ -8,8 +8,7 @@
   ``autograde``;
 - :mod:`instructor.grading.sandbox`: the confined kernel that runs a submission;
 - :mod:`instructor.grading.intake`: what is read of a submission (regular files inside it, 20 MB at
-  most),
-  :mod:`instructor.grading.collect`: ``nbgrader collect`` through it;
+  most), :mod:`instructor.grading.collect`: ``nbgrader collect`` through it;
 - :mod:`instructor.grading.course`: ``make course COURSE=DIR``, an nbgrader course directory;
 - :mod:`instructor.grading.identity`: one key per student, the instructor's roster (never shipped);
   :mod:`instructor.grading.id_preprocessors`: the roster in nbgrader, the numbers a notebook showed.

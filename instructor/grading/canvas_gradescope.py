@@ -3,9 +3,8 @@
 Each export (*Export Submissions* zip or folder, or the *Download Grades* CSV,
 :func:`instructor.grading.report_data.from_gradescope`) is one problem set; a student's score is
 Gradescope's total of the submission. The CSV is :mod:`instructor.grading.canvas`'s: the same
-columns, the
-same matching to a Canvas roster (by SIS User ID, SIS Login ID, Canvas ID or e-mail), the same
-report of missing submissions and unknown students, missing work blank or 0 (``missing``).
+columns, the same matching to a Canvas roster (by SIS User ID, SIS Login ID, Canvas ID or e-mail),
+the same report of missing submissions and unknown students, missing work blank or 0 (``missing``).
 """
 
 from __future__ import annotations

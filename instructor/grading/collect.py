@@ -1,6 +1,5 @@
 """``nbgrader collect`` with the course's intake (:mod:`instructor.grading.intake`), named in the
-course's
-``nbgrader_config.py`` as ``c.ExchangeFactory.collect``.
+course's ``nbgrader_config.py`` as ``c.ExchangeFactory.collect``.
 
 nbgrader's own collect copies a student's exchange folder with ``shutil.copytree``, which
 follows symbolic links: a student's ``inbound/`` folder holding ``ps01.ipynb ->
@@ -8,8 +7,7 @@ follows symbolic links: a student's ``inbound/`` folder holding ``ps01.ipynb ->
 instructor copy *that* file into ``submitted/`` as the student's work. :class:`SafeCollect`
 copies only regular files of one name inside the student's folder, each at most
 :data:`instructor.grading.intake.MAX_BYTES` (checked before reading); a refused notebook is written
-as a
-placeholder notebook that carries the note (graded 0 with it); any other refused file is left
+as a placeholder notebook that carries the note (graded 0 with it); any other refused file is left
 out, with a warning in collect's log. A student folder that is itself a symbolic link, or a
 user name that is not one plain path component, is not collected (a warning).
 

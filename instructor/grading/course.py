@@ -8,8 +8,7 @@ writes
   roster, checked, which maps every id of a student to the course's key
   (instructor/grading/identity.py);
 - ``DIR/nbgrader_config.py``: the course's preprocessors (:mod:`instructor.grading.preprocessor`:
-  the
-  confined kernel, the grader's verdict, the guard against malformed submissions), the folders
+  the confined kernel, the grader's verdict, the guard against malformed submissions), the folders
   the kernel must not see, timeouts;
 - ``DIR/source/psNN/psNN_<slug>.ipynb`` for every problem set: the notebooks of
   ``problem_sets/`` when the repository has them, otherwise the exercise section of each
@@ -232,8 +231,7 @@ ROSTER = "roster.csv"  # the copy of the instructor's roster in the course direc
 
 def copy_roster(roster, course):
     """Check the roster (:mod:`instructor.grading.identity`: RosterError naming the line) and copy
-    it
-    into the course directory, which the confined kernel never sees; returns the copy."""
+    it into the course directory, which the confined kernel never sees; returns the copy."""
     from instructor.grading.identity import load
 
     load([roster])

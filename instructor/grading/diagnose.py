@@ -1,19 +1,17 @@
 """What the grader notes about one graded answer, for the class report (issue 34).
 
 :func:`entry` is called by :class:`instructor.grading.preprocessor.VerifyRecords` for every
-exercise check
-cell, in the grader's process, after its verdict: it keeps the verdict, the **known mistake** the
-answer is (its key in ``MISTAKES`` of ``instructor/answers/chNN.py``, whose hint text is the bank's
-``mistakes[key]``), the variant the student was graded on and the one the notebook showed,
-whether the student had run the check cell in the notebook they handed in, and, for a wrong
+exercise check cell, in the grader's process, after its verdict: it keeps the verdict, the **known
+mistake** the answer is (its key in ``MISTAKES`` of ``instructor/answers/chNN.py``, whose hint text
+is the bank's ``mistakes[key]``), the variant the student was graded on and the one the notebook
+showed, whether the student had run the check cell in the notebook they handed in, and, for a wrong
 answer that no known mistake explains, a short text of the answer and a **group** key: equal
 values (or equal expressions) get the same key.
 
 A known mistake is matched the way the grader matches the right answer
 (:mod:`instructor.grading.verify`): the instructor's mistaken expression is computed for the
-student's own
-variant and compared with the answer (choices: the same letters; numbers: within 4·TOL;
-expressions: the same tree, else at fresh random points). The group key of an expression is
+student's own variant and compared with the answer (choices: the same letters; numbers: within
+4·TOL; expressions: the same tree, else at fresh random points). The group key of an expression is
 its values at :data:`GROUP_POINTS` fixed points rounded to :data:`DIGITS` significant digits
 (``x*(1+y)`` and ``x + x*y`` share one); of numbers, the numbers so rounded; of a choice, its
 letters. Nothing here decides points.
@@ -158,8 +156,8 @@ def entry(name, data, student, result, checked=None):
 
     ``data`` is the record (or None when there was none), ``result`` the grader's verdict
     (:class:`instructor.grading.verify.Verdict`, or None when a grading note gave 0 before any
-    verdict),
-    ``checked`` whether the check cell had been run in the handed-in notebook (None: unknown).
+    verdict), ``checked`` whether the check cell had been run in the handed-in notebook (None:
+    unknown).
     """
     out = {"exercise": name, "verdict": result.status if result else "zero", "mistake": None}
     ex = EXERCISES.get(name)

@@ -20,14 +20,12 @@ Each zip holds, at its root, what Gradescope's autograder specification asks for
   scanned by the leak gate like the rest; students never see the zip;
 - **instructor only** (:data:`SECRET`): ``instructor/answers/chNN.py`` of this set's chapter
   only (the reference solutions that :mod:`instructor.grading.verify` re-checks every recorded
-  answer against,
-  at fresh points; never another chapter's) and
+  answer against, at fresh points; never another chapter's) and
   ``problem_sets/psNN_*.ipynb`` (the instructor's solved copy, from which nbgrader builds its
   gradebook and the released cells it puts back).
 
 The leak gate (``instructor/release/leak_gate.py``) scans every other member (:func:`leak_check`):
-none
-may hold a worked-solution line or the record of a right answer, nor (but for the code and
+none may hold a worked-solution line or the record of a right answer, nor (but for the code and
 README, which name the markers they handle) an nbgrader marker. Gradescope does not show the
 zip to students; what they see is ``results.json``, which holds only points, the checker's
 hints and the grader's notes (never cell outputs or the solutions); the tests run the leak
@@ -178,11 +176,13 @@ def leak_check(files, root=ROOT):
     from instructor.release import leak_gate
 
     needles = leak_gate.collect_needles(root)
+    package = set(_grading_files(root))
     report = leak_gate.Report()
     for name, data in sorted(files.items()):
         if SECRET.match(name):
             continue
-        if leak_gate._solution_dir(name):
+        # the instructor package's grading parts are in the zip on purpose (_grading_files)
+        if leak_gate._solution_dir(name) and name not in package:
             report.hits.append(f"{name}: in a solutions folder")
         found = leak_gate.Report()
         leak_gate.scan_data(name, data, needles, found)

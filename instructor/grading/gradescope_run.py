@@ -8,8 +8,7 @@ autograde`` with the course's configuration, written as Gradescope's ``results.j
 
 ``prepare`` makes an nbgrader course directory ``<root>/course``
 (:func:`instructor.grading.course.write_course`, then ``nbgrader generate_assignment``) from the
-problem
-set shipped in ``<root>/source``.
+problem set shipped in ``<root>/source``.
 ``grade`` takes the notebook of ``<root>/submission`` through the course's intake
 (:mod:`instructor.grading.intake`: the file named as the problem set's, else the only ``*.ipynb``; a
 regular file of one name inside the folder, at most 20 MB, checked before it is read, JSON
@@ -114,8 +113,7 @@ def _aliases(metadata):
 
 def identity(metadata, roster):
     """The :class:`instructor.grading.identity.Resolved` key of the submission's student: the first
-    of
-    its e-mail, ``sid`` and ``id`` that the roster knows, else the e-mail (or the first id
+    of its e-mail, ``sid`` and ``id`` that the roster knows, else the e-mail (or the first id
     there is) as given, normalised, with a note when there is a roster.
 
     Examples
@@ -336,8 +334,7 @@ class GraderFault(RuntimeError):
 
 def _intake(top, expected):
     """``(bytes of the notebook to grade, note)``; :class:`instructor.grading.intake.Refused` with
-    the
-    student's note when there is none to grade (instructor/grading/intake.py)."""
+    the student's note when there is none to grade (instructor/grading/intake.py)."""
     from instructor.grading import intake
 
     folder = top / "submission"

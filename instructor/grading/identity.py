@@ -207,8 +207,7 @@ def write_report(path, assignment, student, row):
 
 def _rewrite(path, assignment, student, row):
     """The report's rows, every cell formula-safe (:mod:`instructor.grading.csv_safe`: ``shown_as``
-    comes
-    from the student's own record), as they are stored and matched."""
+    comes from the student's own record), as they are stored and matched."""
     from instructor.grading.csv_safe import neutralise
 
     rows = []

@@ -21,8 +21,7 @@ A ``.zip`` in the folder is never unpacked here. Names are shown in notes as the
 :func:`read_inside` is the one check; :func:`pick` chooses the notebook of a Gradescope
 submission; :func:`refused_notebook` is what nbgrader grades in place of a refused file (an
 empty notebook carrying the note: :class:`instructor.grading.preprocessor.GuardCells` then gives
-every
-grade cell 0 with that note); :class:`SafeCollect` is ``nbgrader collect`` with this intake.
+every grade cell 0 with that note); :class:`SafeCollect` is ``nbgrader collect`` with this intake.
 """
 
 from __future__ import annotations

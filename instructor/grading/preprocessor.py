@@ -6,8 +6,7 @@
 - :class:`VerifyRecords` runs after it, in nbgrader's process, which no student code has
   touched: every exercise check cell keeps its points only when the grader's verdict on the
   answer it recorded (:mod:`instructor.grading.verify`) is "correct"; otherwise its outputs become
-  one
-  error whose one line says why. A missing, duplicated, forged or unreadable record gives 0.
+  one error whose one line says why. A missing, duplicated, forged or unreadable record gives 0.
 - :class:`GuardCells` runs first on a submission (sanitize stage): a grade cell of the release
   that was deleted, duplicated or retyped is put back as released, with an error output that
   gives it 0 and says what happened, so that nbgrader grades the rest of the notebook and the
@@ -329,10 +328,9 @@ class VerifyRecords(NbGraderPreprocessor):
 
     The student is nbgrader's student id resolved to the course's key by the roster
     (:class:`~instructor.grading.id_preprocessors.CourseIdentity`). Where the submitted notebook
-    showed
-    other numbers than the key's (:class:`~instructor.grading.id_preprocessors.ShownNumbers`), the
-    feedback
-    says so at the top and in each exercise concerned, and the student is listed in the
+    showed other numbers than the key's
+    (:class:`~instructor.grading.id_preprocessors.ShownNumbers`), the
+    feedback says so at the top and in each exercise concerned, and the student is listed in the
     instructor's identity report (a regrade, not a silent 0); an id the roster does not know is
     graded as given, with a note, and listed too."""
 

@@ -3,18 +3,16 @@ cannot start (Gradescope's Docker container, any container whose seccomp profile
 namespaces, a root JupyterHub). It needs no namespace, no mount and no account.
 
 Root starts the kernel (:mod:`instructor.grading.sandbox`'s launcher) and, before ``execve``,
-becomes a
-dedicated unprivileged user: uid = gid = :data:`KERNEL_ID` + a slot (``0 <= slot <``
+becomes a dedicated unprivileged user: uid = gid = :data:`KERNEL_ID` + a slot (``0 <= slot <``
 :data:`SLOTS`, one per kernel running at once, held by a lock of the kernel manager), numbers
 that no account or group may use (checked at start, :func:`problem`). The launcher calls
 ``setgroups([])``, drops every capability from the bounding set, ``setresgid``/``setresuid``
 (which clear the permitted, effective and ambient sets), sets ``PR_SET_NO_NEW_PRIVS`` and the
 limits of :data:`instructor.grading.sandbox.LIMITS`, which bind a user that is not root
-(``RLIMIT_NPROC``
-counts every process of that uid). The kernel gets a fresh empty home (and ``TMPDIR`` inside
-it) owned by that uid, mode 0700, removed with every file the uid left in the shared temporary
-folders (:data:`SHARED_TMP`) once the kernel stops, after every process of that uid is killed
-(``kill(-1, SIGKILL)`` sent as that uid, :func:`kill_all`: a child that left the kernel's
+(``RLIMIT_NPROC`` counts every process of that uid). The kernel gets a fresh empty home (and
+``TMPDIR`` inside it) owned by that uid, mode 0700, removed with every file the uid left in the
+shared temporary folders (:data:`SHARED_TMP`) once the kernel stops, after every process of that uid
+is killed (``kill(-1, SIGKILL)`` sent as that uid, :func:`kill_all`: a child that left the kernel's
 process group ends too).
 
 What it may read is decided by permissions, checked empirically before any submission runs:

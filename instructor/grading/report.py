@@ -1,9 +1,9 @@
 """``make report COURSE=DIR`` or ``make report GRADESCOPE=EXPORT``: what the class got wrong.
 
-    python -m instructor.grading.report --course DIR [--assignment psNN ...] [--roster canvas.csv]
-    [--out D]
-    python -m instructor.grading.report --gradescope EXPORT [--assignment psNN] [--roster
-    canvas.csv] [--out D]
+    python -m instructor.grading.report --course DIR [--assignment psNN ...]
+        [--roster canvas.csv] [--out D]
+    python -m instructor.grading.report --gradescope EXPORT [--assignment psNN]
+        [--roster canvas.csv] [--out D]
 
 For each problem set, four files in ``--out`` (default ``DIR/report/``, or ``report/`` beside the
 export): ``psNN.html`` and ``psNN.csv``, the instructor's copy (it names students), and

@@ -2,8 +2,7 @@ r"""The numbers of the class report (issue 34): per exercise, per variant, per p
 
 - **Share right**: a submission is right on an exercise when it has the exercise's full points.
 - **Known mistakes**: the grader's match (:mod:`instructor.grading.diagnose`), counted with the
-  bank's hint
-  (the default variant's wording).
+  bank's hint (the default variant's wording).
 - **Unexplained wrong answers**: wrong, no known mistake; grouped by the grader's group key
   (equal values or expressions together), largest group first.
 - **Harder variants**: for each variant of an exercise, Fisher's exact test, one-sided, of
@@ -212,8 +211,7 @@ def exercise_stats(ps, name, known=True):
 
 def set_stats(ps, known=None):
     """The :class:`SetStats` of a :class:`instructor.grading.report_data.ProblemSet`;
-    ``known(name)``
-    says whether an exercise is of this course version (default: every one is)."""
+    ``known(name)`` says whether an exercise is of this course version (default: every one is)."""
     known = known or (lambda name: True)
     exercises = [exercise_stats(ps, n, known(n)) for n in ps.exercises]
     totals = Counter(round(s.score, 6) for s in ps.submissions)

@@ -36,8 +36,7 @@ does); it only uses the standard library.
 **Where bubblewrap cannot start** and the grader runs as root (Gradescope's Docker container,
 any container whose seccomp profile refuses user namespaces, a root hub), the kernel is
 confined by a privilege drop instead (:mod:`instructor.grading.privdrop`: a dedicated unprivileged
-uid,
-an empty home, the same cleared environment and limits, the hidden folders closed to it by
+uid, an empty home, the same cleared environment and limits, the hidden folders closed to it by
 permissions checked at start). :func:`confinement` says which confinement is used here.
 
 **With neither** (macOS, Windows, a Linux machine without bubblewrap or user namespaces where

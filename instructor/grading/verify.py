@@ -3,8 +3,7 @@ r"""The grader's verdict on a recorded answer, decided in the instructor's proce
 The expected answers are the instructor's reference solutions, ``instructor/answers/chNN.py``,
 run here (after the chapter's set-up code) and never shipped. A recorded answer
 (:mod:`course_lib.record`) is read with the whitelist of :mod:`instructor.grading.records`, then
-read again
-by the grader's own import of ``course_lib`` (exact types, bounded sizes), and compared:
+read again by the grader's own import of ``course_lib`` (exact types, bounded sizes), and compared:
 
 - **choice**: the set of letters;
 - **numbers**: every entry within :math:`4\,\mathrm{TOL}\max(1, \lVert E\rVert)` of the

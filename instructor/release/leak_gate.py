@@ -30,12 +30,11 @@ message of its whole git history, every member of each wheel and every file of t
 (HTML also with its tags taken out, JSON and notebooks also by their strings) and fails on:
 a needle found (naming the file, the line and where the solution comes from), a line with
 one of nbgrader's markers, a folder named ``solutions``, ``answers`` or ``instructor``, and a class
-roster (a file named
-``roster*``, or a CSV with a Canvas gradebook's header): students' ids stay with the instructor.
+roster (a file named ``roster*``, or a CSV with a Canvas gradebook's header): students' ids stay
+with the instructor.
 
 Command line: ``python -m instructor.release.leak_gate ROOT STUDENT_DIR DIST_DIR SITE_DIR`` (exit 1
-on
-any hit, listing up to 50).
+on any hit, listing up to 50).
 """
 
 from __future__ import annotations
@@ -226,8 +225,7 @@ def _right_records(text):
 
 def _roster(name, data):
     """Whether a file looks like a class roster (instructor/grading/identity.py): a file named
-    roster*, or
-    a CSV with a Canvas gradebook's identity header. Students never get one."""
+    roster*, or a CSV with a Canvas gradebook's identity header. Students never get one."""
     base = name.replace("\\", "/").rsplit("/", 1)[-1].lower()
     if base.startswith("roster"):
         return True

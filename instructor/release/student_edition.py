@@ -4,17 +4,15 @@ Built from the instructor's tree into ``build/release/student/``:
 
 * ``notebooks/`` and ``problem_sets/`` (when there): every solution region replaced by its stub
   (:func:`instructor.build.student.student_notebook`); a chapter keeps the outputs of its reading
-  part
-  (strict nbval compares them), every cell from the first nbgrader cell on is cleared;
+  part (strict nbval compares them), every cell from the first nbgrader cell on is cleared;
 * ``course_lib/`` (all of it: the instructor's tools are in the ``instructor`` package);
 * ``tests/``: the test files that need no instructor tool and name no exercise or answer
   (:func:`student_tests` says which are left out and why), with ``conftest.py`` and the nbval
   sanitizer;
 * its own README, Makefile (``make lab``, ``make test``), conftest.py, .gitignore and
   ``requirements-test.txt`` (from ``instructor/release/student_template/``), the student's
-  environment,
-  ``binder/``, ``pyproject.toml`` (its pytest paths: tests, course_lib, the notebooks) and the
-  licence;
+  environment, ``binder/``, ``pyproject.toml`` (its pytest paths: tests, course_lib, the notebooks)
+  and the licence;
 * a fresh git repository, branch ``student`` (the branch the launch links open), one commit.
 """
 

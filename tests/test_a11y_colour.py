@@ -14,7 +14,7 @@ from PIL import Image
 from course_lib import plotting
 from course_lib.plotting.figures_orientation import double_cover
 from instructor.build import figure_audit
-from instructor.build.figure_audit import contrast, delta_e, simulate
+from instructor.build.figure_audit import contrast, delta_e, lab, linear, simulate  # noqa: F401
 
 # Machado et al. 2009 (instructor/build/figure_audit.py), severity 1.0: the two red-green
 # deficiencies, which the frame palette is made for (tritanopia: instructor/build/figure_audit.py on

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 import yaml
-from test_grading_gradescope import notebook, run_autograder
+from test_grading_gradescope import autograder, notebook, run_autograder  # noqa: F401
 
 from course_lib.exercises import EXERCISES
 from instructor.grading.report_data import from_course, from_gradescope, known

@@ -38,30 +38,30 @@ test: $(STAMP)
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -m "not notebook_exec" -q
 
-# Give each figure's plotting.show the caption under it as alt text (tools/alt_text.py), put the
+# Give each figure's plotting.show the caption under it as alt text (instructor/build/alt_text.py), put the
 # setup cell first, execute and clean every chapter and problem set (idempotent: a
 # re-run changes nothing), then refresh the README's launch links from pyproject.toml.
 notebooks: $(STAMP)
-	$(BIN)/python tools/alt_text.py --apply notebooks/[0-9]*.ipynb
-	$(BIN)/python tools/notebooks.py --apply notebooks/[0-9]*.ipynb problem_sets/ps*.ipynb
-	$(BIN)/python tools/course_links.py --readme
+	$(BIN)/python -m instructor.build.alt_text --apply notebooks/[0-9]*.ipynb
+	$(BIN)/python -m instructor.build.notebooks --apply notebooks/[0-9]*.ipynb problem_sets/ps*.ipynb
+	$(BIN)/python -m instructor.build.course_links --readme
 
-# After editing an exercise (its bank entry, its solution in tools/solutions): the variant
-# tables (tools/variant_tables.py), the checker's fingerprints, the problem sets (hidden tests and hand-made cells kept) and the chapters'
+# After editing an exercise (its bank entry, its solution in instructor/answers): the variant
+# tables (instructor/build/variant_tables.py), the checker's fingerprints, the problem sets (hidden tests and hand-made cells kept) and the chapters'
 # pointers, then the problem sets executed. One command; a re-run changes nothing.
 exercises: $(STAMP)
-	$(BIN)/python tools/variant_tables.py
-	$(BIN)/python tools/exercise_fingerprints.py
-	$(BIN)/python tools/sync_exercises.py
-	$(BIN)/python tools/notebooks.py --apply problem_sets/ps*.ipynb
+	$(BIN)/python -m instructor.build.variant_tables
+	$(BIN)/python -m instructor.build.exercise_fingerprints
+	$(BIN)/python -m instructor.build.sync_exercises
+	$(BIN)/python -m instructor.build.notebooks --apply problem_sets/ps*.ipynb
 
 # One student's numbers and answers for a problem set: `make variant STUDENT=id PS=ps04`
-# (tools/show_variant.py; the id as the grader gets it). Variants on/off for the course:
-# `.venv/bin/python tools/variant_tables.py --on` / `--off`, then `make exercises`.
+# (instructor/build/show_variant.py; the id as the grader gets it). Variants on/off for the course:
+# `.venv/bin/python -m instructor.build.variant_tables --on` / `--off`, then `make exercises`.
 .PHONY: variant
 variant: $(STAMP)
 	@test -n "$(STUDENT)" -a -n "$(PS)" || { echo "usage: make variant STUDENT=id PS=psNN"; exit 2; }
-	$(BIN)/python tools/show_variant.py "$(STUDENT)" "$(PS)" $(if $(ROSTER),--roster "$(ROSTER)")
+	$(BIN)/python -m instructor.build.show_variant "$(STUDENT)" "$(PS)" $(if $(ROSTER),--roster "$(ROSTER)")
 
 # The course website in build/site/ from the student copies; SOLUTIONS=1: the instructor's, in
 # build/site-instructor/ with a banner on every page (never over the student site). Its tools
@@ -73,20 +73,20 @@ $(SITE_STAMP): $(STAMP) site/requirements.txt
 	touch $(SITE_STAMP)
 
 site: $(SITE_STAMP)
-	$(BIN)/python site/build.py $(if $(SOLUTIONS),--solutions)
+	$(BIN)/python -m instructor.build.website $(if $(SOLUTIONS),--solutions)
 
 # Builds the student site, then opens its pages in headless Chromium (/usr/bin/chromium): every
 # figure on its page, no page wider than 1200 px, no request leaving the site, no solution.
 site-test: $(SITE_STAMP)
-	$(BIN)/python site/build.py
+	$(BIN)/python -m instructor.build.website
 	$(BIN)/python -m pytest site/test_site.py -q
 
 # Everything students get, in build/release/: student/ (the student edition, a git repository of
 # its own), dist/ (the wheel), site/ (the website); the leak gate scans all three and fails the
-# release on any worked-solution line, nbgrader marker or solutions folder (release/).
+# release on any worked-solution line, nbgrader marker or solutions folder (instructor/release/).
 .PHONY: release
 release: $(SITE_STAMP)
-	$(BIN)/python release/make_release.py
+	$(BIN)/python -m instructor.release.make_release
 
 # Every notebook in a real JupyterLab, run in headless Chromium (/usr/bin/chromium): outputs,
 # math, figures, every slider and a mouse drag of each explorer's 3D view; screenshots in build/e2e/.
@@ -98,19 +98,19 @@ e2e: $(STAMP)
 # Student copies (solutions replaced by stubs, outputs cleared) of the chapters and, when there,
 # the problem sets, in build/student/; `make release` builds the whole student edition.
 student: $(STAMP)
-	$(BIN)/python -m course_lib.student notebooks build/student --force
-	$(if $(wildcard problem_sets/*.ipynb),$(BIN)/python -m course_lib.student problem_sets build/student/problem_sets --force)
+	$(BIN)/python -m instructor.build.student notebooks build/student --force
+	$(if $(wildcard problem_sets/*.ipynb),$(BIN)/python -m instructor.build.student problem_sets build/student/problem_sets --force)
 
 # Speed against the reference (scipy) and of the exercise checks: CPU time, best of N, printed.
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_so3.py
-	$(BIN)/python benchmarks/bench_orientation.py
-	$(BIN)/python benchmarks/bench_exercises.py
+	$(BIN)/python -m benchmarks.bench_so3
+	$(BIN)/python -m benchmarks.bench_orientation
+	$(BIN)/python -m benchmarks.bench_exercises
 	$(BIN)/python -m benchmarks.bench_report
 
 # Style: ruff's checks and its formatter (configured in pyproject.toml) over the Python sources
 # and the code cells of the notebooks (ruff reads .ipynb itself; .ipynb_checkpoints is skipped).
-LINT_PATHS := conftest.py course_lib grader release site tests benchmarks e2e tools notebooks problem_sets
+LINT_PATHS := conftest.py course_lib instructor site tests benchmarks e2e notebooks problem_sets
 lint: $(STAMP)
 	$(BIN)/ruff check $(wildcard $(LINT_PATHS))
 	$(BIN)/ruff format --check $(wildcard $(LINT_PATHS))
@@ -147,7 +147,7 @@ clean:
 COURSE ?=
 course: $(STAMP)
 	@test -n "$(COURSE)" || { echo "usage: make course COURSE=DIR [ROSTER=roster.csv]"; exit 2; }
-	$(BIN)/python -m grader.course $(COURSE) $(if $(ROSTER),--roster "$(ROSTER)")
+	$(BIN)/python -m instructor.grading.course $(COURSE) $(if $(ROSTER),--roster "$(ROSTER)")
 
 # A class of 20 simulated students through `make course` and real nbgrader (a benchmark, not a
 # test): CPU per submission, the confined kernels' included, where it goes, and the projection
@@ -163,7 +163,7 @@ ASSIGNMENT ?=
 ROSTER     ?=
 UNCONFINED ?=
 gradescope: $(STAMP)
-	$(BIN)/python -m grader.gradescope $(if $(UNCONFINED),--unconfined) $(if $(ROSTER),--roster "$(ROSTER)")
+	$(BIN)/python -m instructor.grading.gradescope $(if $(UNCONFINED),--unconfined) $(if $(ROSTER),--roster "$(ROSTER)")
 
 # GRADESCOPE=EXPORT (issue 34): the scores of Gradescope's export(s) instead of COURSE; MISSING=zero
 # writes 0 for missing work (default: blank, which Canvas leaves unchanged).
@@ -171,7 +171,7 @@ MISSING    ?=
 GRADESCOPE ?=
 grades-canvas: $(STAMP)
 	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make grades-canvas COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [MISSING=zero]"; exit 2; }
-	$(BIN)/python -m grader.canvas $(COURSE) $(foreach g,$(GRADESCOPE),--gradescope $(g)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(MISSING),--missing $(MISSING))
+	$(BIN)/python -m instructor.grading.canvas $(COURSE) $(foreach g,$(GRADESCOPE),--gradescope $(g)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(MISSING),--missing $(MISSING))
 
 # What the class got wrong (issue 34, docs/grading.md): one HTML report and CSV per problem set,
 # the instructor's copy and a de-identified one, from an nbgrader course or a Gradescope export.
@@ -179,10 +179,10 @@ grades-canvas: $(STAMP)
 OUT ?=
 report: $(STAMP)
 	@test -n "$(COURSE)$(GRADESCOPE)" || { echo "usage: make report COURSE=DIR|GRADESCOPE=EXPORT [ASSIGNMENT=psNN] [ROSTER=canvas-export.csv] [OUT=folder]"; exit 2; }
-	$(BIN)/python -m grader.report $(if $(COURSE),--course $(COURSE)) $(if $(GRADESCOPE),--gradescope $(GRADESCOPE)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(OUT),--out $(OUT))
+	$(BIN)/python -m instructor.grading.report $(if $(COURSE),--course $(COURSE)) $(if $(GRADESCOPE),--gradescope $(GRADESCOPE)) $(foreach a,$(ASSIGNMENT),--assignment $(a)) $(if $(ROSTER),--roster $(ROSTER)) $(if $(OUT),--out $(OUT))
 
 bench-gradescope: $(STAMP)
-	$(BIN)/python benchmarks/bench_gradescope.py
+	$(BIN)/python -m benchmarks.bench_gradescope
 
 test-gradescope: $(STAMP)
 	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q
@@ -204,16 +204,16 @@ test-slow: $(STAMP)
 # three engines (axe-core, IBM Equal Access, HTML_CodeSniffer: pinned in e2e/engines/, from npm
 # into build/a11y-deps/) in headless Chromium on every page (at 1200 and 320 CSS px) and on every
 # chapter and problem set opened in JupyterLab; the keyboard (sliders, the 3D view), the maths in
-# JupyterLab, and every figure's colours (tools/figure_audit.py). Fails on any problem in the
+# JupyterLab, and every figure's colours (instructor/build/figure_audit.py). Fails on any problem in the
 # course's content.
 .PHONY: a11y
 a11y: $(SITE_STAMP)
 	@test -x /usr/bin/chromium || { echo "make a11y needs Chromium: sudo apt-get install chromium"; exit 2; }
 	@command -v npm >/dev/null || { echo "make a11y needs npm (axe-core, IBM's accessibility-checker-engine, HTML_CodeSniffer, MathJax): sudo apt-get install npm"; exit 2; }
-	$(BIN)/python site/build.py
-	$(BIN)/python site/build.py --solutions
+	$(BIN)/python -m instructor.build.website
+	$(BIN)/python -m instructor.build.website --solutions
 	$(BIN)/python -m pytest -q -p no:cacheprovider site/test_a11y_site.py
 	$(BIN)/python e2e/a11y_keyboard.py
 	$(BIN)/python e2e/a11y_math_lab.py
 	$(BIN)/python e2e/a11y.py
-	$(BIN)/python -m tools.figure_audit
+	$(BIN)/python -m instructor.build.figure_audit

@@ -89,9 +89,9 @@ def missing(marker):
 
 def _confinement_problem():
     try:
-        from grader.sandbox import bubblewrap_problem
-    except ImportError:  # the student edition has no grader/
-        return "the instructor's grader/ is not here"
+        from instructor.grading.sandbox import bubblewrap_problem
+    except ImportError:  # the student edition has no instructor/grading/
+        return "the instructor package (instructor/grading/) is not here"
     return bubblewrap_problem()
 
 

@@ -15,7 +15,7 @@
 4. **Variants** (issue 33). The one-time cost of reading the variant tables and the
    fingerprints in a fresh process (the first check of a session); then, for every exercise
    with variants, check() of a student on the table's last row (right, and its first known
-   mistake) and the grader's verdict on that student's right answer (``grader.verify``:
+   mistake) and the grader's verdict on that student's right answer (``instructor.grading.verify``:
    the reference solution run on the student's numbers), median of REPEATS.
 
 CPU time is what the machine is asked to do; the wall clock on a shared machine also counts
@@ -35,15 +35,13 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
+from benchmarks._timing import best_times
+from course_lib import exercises
+from course_lib.exercises import Choice, Value, _digests, _engine, alpha, check
+from instructor.build import exercise_fingerprints as F
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from _timing import best_times  # noqa: E402
-
-from course_lib import exercises  # noqa: E402
-from course_lib.exercises import Choice, Value, _digests, _engine, alpha, check  # noqa: E402
-from tools import exercise_fingerprints as F  # noqa: E402
 
 REPEATS = 5
 CHECK_TARGET, HOSTILE_TARGET, GUESS_RATIO_TARGET = 0.200, 1.0, 1000
@@ -244,7 +242,7 @@ def _graded(verify, name, record, sid):
 def variant_costs():
     from course_lib.exercises import parameters, set_student_id
     from course_lib.record import answer_record
-    from grader import verify
+    from instructor.grading import verify
 
     print("4. Variants: reading the tables and fingerprints once, then one check() / verdict")
     print(f"   first read in a fresh process: {load_costs() * 1e3:.0f} ms wall")

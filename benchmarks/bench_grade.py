@@ -16,7 +16,7 @@ reparented); elsewhere its process tree is sampled every 20 ms (a lower bound: a
 last 20 ms are missed). Printed: per problem set, the CPU and wall time per submission; then
 where the CPU goes (nbgrader's start-up per process, nbgrader's work per submission, the
 kernel's start, its cells, its stop), from two probes (an nbgrader process that grades no one;
-confined kernels started and stopped as :class:`grader.preprocessor.ConfinedExecute` does);
+confined kernels started and stopped as :class:`instructor.grading.preprocessor.ConfinedExecute` does);
 then the projection for 200 students x 5 problem sets on 2 cores.
 
     python -m benchmarks.bench_grade [--students 20] [--jobs 2] [--per-student]
@@ -84,7 +84,7 @@ def child(argv):
 async def _kernels(now, count):
     """``count`` confined kernels, one after the other: started, ready, stopped (``now``: killed,
     as ConfinedExecute's default ``shutdown_kernel = "immediate"``; else a shutdown request)."""
-    from grader.sandbox import ConfinedKernelManager
+    from instructor.grading.sandbox import ConfinedKernelManager
 
     for _ in range(count):
         km = ConfinedKernelManager()
@@ -291,7 +291,7 @@ def probes(course, ps):
 
 
 def report(totals, subs, startup, kernel, args):
-    from grader.preprocessor import ConfinedExecute
+    from instructor.grading.preprocessor import ConfinedExecute
 
     wall, tree, own, procs = totals
     (startup, startup_own) = startup
@@ -347,7 +347,7 @@ def main(argv=None):
         help="how the kernel stops after the last cell (default: ConfinedExecute's)",
     )
     args = parser.parse_args(argv)
-    from grader.course import write_course
+    from instructor.grading.course import write_course
 
     global CGROUP
     CGROUP = _cgroup_base() if sys.platform == "linux" else None

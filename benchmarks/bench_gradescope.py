@@ -9,8 +9,8 @@ Goal: a median under 10 s on 2 cores.
 Each submission is graded twice, by turns, both through ``tests/docker_seccomp.py`` (which
 needs ``python3-seccomp``) in its Gradescope-like view of the file system: with bubblewrap
 (``--view-only``: the view, no constraint) and as root under Docker's seccomp constraint, where
-bubblewrap cannot start and the privilege drop (``grader/privdrop.py``) confines the kernel.
-Both pay the view's own cost (a mount namespace, the checkout's overlay, a Python start; the
+bubblewrap cannot start and the privilege drop (``instructor/grading/privdrop.py``) confines the
+kernel. Both pay the view's own cost (a mount namespace, the checkout's overlay, a Python start; the
 launcher alone is timed and printed). Goal: privdrop at most 1.10 x bubblewrap, as the median
 over submissions of privdrop's wall time over bubblewrap's for the same submission (graded one
 after the other: the load of a shared machine evens out).
@@ -37,9 +37,9 @@ from pathlib import Path
 
 import nbformat
 
+from instructor.grading import gradescope
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grader import gradescope  # noqa: E402
 
 GOAL = 10.0
 RATIO_GOAL = 1.10
@@ -48,8 +48,7 @@ HARNESS = ROOT / "tests" / "docker_seccomp.py"
 
 def harness(argv, constraint=True):
     """``argv`` in tests/docker_seccomp.py's Gradescope view, under Docker's constraint or not."""
-    sys.path.insert(0, str(HARNESS.parent))
-    from docker_seccomp import command
+    from tests.docker_seccomp import command
 
     return command(argv, ROOT, (sys.base_prefix, sys.prefix), constraint)
 
@@ -60,8 +59,8 @@ def lay_out(ps, top):
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(data)
     env = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top)}
-    script = str(top / "source" / "grader" / "gradescope_run.py")
-    subprocess.run([sys.executable, script, "prepare"], env=env, check=True, capture_output=True)
+    prepare = [sys.executable, "-m", "instructor.grading.gradescope_run", "prepare"]
+    subprocess.run(prepare, cwd=top / "source", env=env, check=True, capture_output=True)
 
 
 def submission(top, ps, kind):

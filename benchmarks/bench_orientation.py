@@ -10,9 +10,9 @@ scipy's result is printed beside each row.
 """
 
 import numpy as np
-from _timing import CLOCK_NAME, best_times
 from scipy.spatial.transform import Rotation, Slerp
 
+from benchmarks._timing import CLOCK_NAME, best_times
 from course_lib import euler, frames, quaternion, so3
 
 N = 10**6

@@ -24,10 +24,10 @@ from pathlib import Path
 import yaml
 
 from course_lib.exercises import get
-from grader import answer_log
-from grader.course import problem_sets
-from grader.report import write_reports
-from grader.report_data import from_course, from_gradescope
+from instructor.grading import answer_log
+from instructor.grading.course import problem_sets
+from instructor.grading.report import write_reports
+from instructor.grading.report_data import from_course, from_gradescope
 
 GOAL = 30.0
 

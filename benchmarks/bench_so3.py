@@ -12,9 +12,9 @@ accuracy of the batch is printed too.
 """
 
 import numpy as np
-from _timing import CLOCK_NAME, best_times
 from scipy.spatial.transform import Rotation
 
+from benchmarks._timing import CLOCK_NAME, best_times
 from course_lib import euler, quaternion, so3
 
 N = 10**6

@@ -5,17 +5,12 @@ what a fold or an animation player must look like, the staging of the notebooks.
 """
 
 import json
-import sys
-from pathlib import Path
 
 import nbformat
 import pytest
-
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-from fixtures import FOLDS_NOTEBOOK, folds_notebook, write_fixtures  # noqa: E402
-from run_e2e import stage  # noqa: E402
-from view_checks import fold_problems, outside_requests, player_problem  # noqa: E402
+from fixtures import FOLDS_NOTEBOOK, folds_notebook, write_fixtures
+from run_e2e import stage
+from view_checks import fold_problems, outside_requests, player_problem
 
 
 @pytest.mark.parametrize(

@@ -1,8 +1,9 @@
-"""Sphinx configuration of the course website (`make site`; site/build.py prepares the pages).
+"""Sphinx configuration of the course website (`make site`; instructor/build/website.py prepares
+the pages).
 
 Everything the pages load is served from the site itself: MathJax 3 comes from the npm package
-that site/build.py installs into build/site-deps/, the theme is Sphinx's own (alabaster). The
-instructor's edition (COURSE_SITE_EDITION=instructor) has a banner on every page.
+that instructor/build/website.py installs into build/site-deps/, the theme is Sphinx's own
+(alabaster). The instructor's edition (COURSE_SITE_EDITION=instructor) has a banner on every page.
 """
 
 import os
@@ -16,7 +17,9 @@ exclude_patterns = ["_build", "**.ipynb_checkpoints"]
 html_theme = "alabaster"
 html_title = project
 html_theme_options = {"nosidebar": False, "show_powered_by": False}
-html_static_path = [os.environ["COURSE_SITE_STATIC"]]  # mathjax/, course.css (site/build.py)
+html_static_path = [
+    os.environ["COURSE_SITE_STATIC"]
+]  # mathjax/, course.css (instructor/build/website.py)
 mathjax_path = "mathjax/tex-chtml.js"  # relative to _static/
 # WCAG 2.4.3: a formula is not a tab stop (MathJax 3 puts every one in the tab order for its
 # expression explorer: 252-610 stops a chapter); screen readers still read its assistive MathML,
@@ -32,8 +35,8 @@ html_context = {"course_instructor_edition": os.environ.get("COURSE_SITE_EDITION
 html_show_sourcelink = False
 html_copy_source = False  # no _sources/ copies of the notebooks: the pages are the site
 
-# The notebooks are executed by site/build.py (tools/notebooks.py, which does not stall on
-# widget cells); myst-nb only renders them.
+# The notebooks are executed by instructor/build/website.py (instructor/build/notebooks.py, which
+# does not stall on widget cells); myst-nb only renders them.
 nb_execution_mode = "off"
 nb_render_markdown_format = "myst"  # Markdown(...) outputs (tables) are parsed, math included
 myst_enable_extensions = ["dollarmath", "amsmath"]

@@ -7,16 +7,13 @@ with a visible focus. The axe-core rules run in ``e2e/a11y.py``.
 """
 
 import re
-import sys
 from pathlib import Path
 
 import pytest
+import test_site
+from a11y_rules import structure_problems
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parent / "e2e"))
-sys.path.insert(0, str(HERE))
-import test_site  # noqa: E402
-from a11y_rules import structure_problems  # noqa: E402
 
 # the site's fixtures: one server, one browser, each page loaded once
 server, browser, visit = test_site.server, test_site.browser, test_site.visit

@@ -32,7 +32,9 @@ CHROMIUM = "/usr/bin/chromium"
 WIDTH = 1200
 PAGES = sorted(p.stem for p in SITE.glob("*.html") if p.stem not in ("genindex", "search"))
 NOTEBOOK_PAGES = sorted(p.stem for p in EXECUTED.glob("*.ipynb"))
-BEGIN = re.compile(r"^\s*#+\s*BEGIN SOLUTION\s*$")  # the markers, as course_lib.student reads them
+BEGIN = re.compile(
+    r"^\s*#+\s*BEGIN SOLUTION\s*$"
+)  # the markers, as instructor.build.student reads them
 END = re.compile(r"^\s*#+\s*END SOLUTION\s*$")
 # a request, not a link: what a page loads by itself (an <a href> to Binder is only a link)
 LOADS_OUTSIDE = re.compile(

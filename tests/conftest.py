@@ -12,8 +12,8 @@ from hypothesis import settings
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-from mpl_toolkits.mplot3d import proj3d  # noqa: E402
+import matplotlib.pyplot as plt
+from mpl_toolkits.mplot3d import proj3d
 
 settings.register_profile("ci", derandomize=True, deadline=None)
 settings.register_profile("dev", deadline=None)

@@ -9,7 +9,7 @@ that the rest of nbgrader's round trip still runs on any machine.
 
 from traitlets.config import Config
 
-from grader.sandbox import confinement_problem
+from instructor.grading.sandbox import confinement_problem
 
 #: Extra ``nbgrader autograde`` arguments for notebooks the tests trust.
 TRUSTED_AUTOGRADE = ["--ConfinedKernelManager.unconfined=True"] if confinement_problem() else []

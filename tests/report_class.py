@@ -10,7 +10,8 @@ variant of ``coords_by_projection`` and all of them make a known mistake there: 
 variant.
 
 :func:`grade` runs the planted check cells through the grader's own preprocessors
-(:class:`grader.answer_log.NoteChecksRun`, :class:`grader.preprocessor.VerifyRecords`) in this
+(:class:`instructor.grading.answer_log.NoteChecksRun`,
+:class:`instructor.grading.preprocessor.VerifyRecords`) in this
 process, without a kernel (the kernel's part, the record, is made by
 :func:`course_lib.record.answer_record` as the check cell does), then stores each grade cell's
 points in a real nbgrader gradebook as ``SaveAutoGrades`` would: full points unless the cell
@@ -33,9 +34,9 @@ from course_lib import exercise_bank
 from course_lib.exercises import EXERCISES, Choice, Value, set_student_id
 from course_lib.exercises._variants import variant_of
 from course_lib.record import MIME, answer_record
-from grader.answer_log import NoteChecksRun
-from grader.preprocessor import VerifyRecords
-from tools.exercise_fingerprints import solutions
+from instructor.build.exercise_fingerprints import solutions
+from instructor.grading.answer_log import NoteChecksRun
+from instructor.grading.preprocessor import VerifyRecords
 
 PS = "ps01"
 NOTEBOOK = "ps01_rigid_body_motion"

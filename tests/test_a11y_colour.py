@@ -4,8 +4,6 @@ on a rendered PNG, its contrast on white, and what tells the axes apart besides 
 
 import io
 import itertools
-import sys
-from pathlib import Path
 
 import matplotlib.colors as mc
 import matplotlib.pyplot as plt
@@ -15,14 +13,12 @@ from PIL import Image
 
 from course_lib import plotting
 from course_lib.plotting.figures_orientation import double_cover
+from instructor.build import figure_audit
+from instructor.build.figure_audit import contrast, delta_e, lab, linear, simulate  # noqa: F401
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-
-import figure_audit  # noqa: E402
-from figure_audit import contrast, delta_e, lab, linear, simulate  # noqa: E402, F401
-
-# Machado et al. 2009 (tools/figure_audit.py), severity 1.0: the two red-green deficiencies,
-# which the frame palette is made for (tritanopia: tools/figure_audit.py on every figure)
+# Machado et al. 2009 (instructor/build/figure_audit.py), severity 1.0: the two red-green
+# deficiencies, which the frame palette is made for (tritanopia: instructor/build/figure_audit.py on
+# every figure)
 MACHADO = {k: figure_audit.MACHADO[k] for k in ("protanopia", "deuteranopia")}
 
 MIN_DELTA_E = 20.0  # CIE76 distance in L*a*b*: about 2.3 is "just noticeable"; 20 is clearly apart
@@ -106,15 +102,12 @@ def test_curves_of_the_double_cover_differ_in_line_style_and_label():
     assert len(lines) >= 2 and len(styles) == len(lines) and len(labels) == len(lines)
 
 
-# --- the chapters' own colours (course_lib/plotting/colours.py, tools/figure_audit.py) ----------
+# --- the chapters' own colours (course_lib/plotting/colours.py, instructor/build/figure_audit.py)
+# ----------
 
 
 def _audit():
-    import sys
-    from pathlib import Path
-
-    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
-    import figure_audit
+    from instructor.build import figure_audit
 
     return figure_audit
 

@@ -2,15 +2,13 @@
 pinned exactly by the project, each with its runner; what is missing said with how to install it."""
 
 import json
-import sys
 from pathlib import Path
 
+import a11y
+import a11y_engines as engines
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "e2e"))
-import a11y  # noqa: E402
-import a11y_engines as engines  # noqa: E402
 
 
 def test_every_engine_is_pinned_to_one_version_in_the_projects_package_json_and_lock():

@@ -6,21 +6,18 @@ import base64
 import io
 import json
 import re
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
+from a11y_rules import alt_text_problem, structure_problems
 from PIL import Image
 
 from course_lib.plotting.display import figure_alt_and_png
+from instructor.build.alt_text import figure_alt
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "e2e"))
-from a11y_rules import alt_text_problem, structure_problems  # noqa: E402
 
-sys.path.insert(0, str(ROOT / "tools"))
-from alt_text import figure_alt  # noqa: E402
 
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb"))
 
@@ -211,9 +208,10 @@ def test_chapter_links_have_meaningful_text():
 
 
 def test_alt_text_tool_gives_a_stale_show_call_its_caption_and_keeps_the_rest():
-    """tools/alt_text.py --apply: the call's text becomes the caption; code around it (with
-    non-ASCII before the call, where ast counts bytes) is kept; a second run changes nothing."""
-    from alt_text import rewrite
+    """instructor/build/alt_text.py --apply: the call's text becomes the caption; code around it
+    (with non-ASCII before the call, where ast counts bytes) is kept; a second run changes
+    nothing."""
+    from instructor.build.alt_text import rewrite
 
     code = 'label = "θ = 30°"\nplot.show(\n    "Figure: old text, cut off at"\n)\nprint(label)'
     caption = r"*Figure: a turn by $\theta = 30^\circ$ about $z$.*"
@@ -229,10 +227,8 @@ def test_alt_text_tool_gives_a_stale_show_call_its_caption_and_keeps_the_rest():
 def test_regression_the_sites_explorer_still_says_the_state_not_the_sliders():
     """The site's alt text of an explorer's still was the text around the cell ("Move the
     sliders to choose an axis..."); it is what the explorer shows in that state."""
-    sys.path.insert(0, str(ROOT / "site"))
-    import build
-
     from course_lib.interactive import rotation_explorer
+    from instructor.build import website as build
 
     explorer = rotation_explorer()
     output = nbformat.v4.new_output("display_data", data=explorer._repr_mimebundle_())

@@ -1,9 +1,9 @@
 """The README's walk-through of adding an exercise, done end to end on a copy of the repository.
 
 1. a new exercise in the bank (``course_lib/exercise_bank/ch01.py``), 2. its worked solution in
-``tools/solutions/ch01.py``, 3. the commands of ``make exercises`` (fingerprints, then
-``tools/sync_exercises.py``). The copy's problem set then holds the new exercise after the
-others, the instructor's hidden test of exercise 1.1 is still there, and in a fresh Python the
+``instructor/answers/ch01.py``, 3. the commands of ``make exercises`` (fingerprints, then
+``instructor/build/sync_exercises.py``). The copy's problem set then holds the new exercise after
+the others, the instructor's hidden test of exercise 1.1 is still there, and in a fresh Python the
 new check accepts the worked solution and refuses a blank answer and a wrong one.
 """
 
@@ -53,7 +53,7 @@ def _python(copy, *args):
 @pytest.fixture(scope="module")
 def copy(tmp_path_factory):
     copy = tmp_path_factory.mktemp("repo")
-    for name in ("course_lib", "tools", "notebooks", "problem_sets"):
+    for name in ("course_lib", "instructor", "notebooks", "problem_sets"):
         shutil.copytree(ROOT / name, copy / name, ignore=shutil.ignore_patterns("__pycache__"))
     ps = copy / "problem_sets" / "ps01_rigid_body_motion.ipynb"
     nb = nbformat.read(ps, as_version=4)
@@ -62,9 +62,12 @@ def copy(tmp_path_factory):
     nbformat.write(nb, ps)
     with open(copy / "course_lib" / "exercise_bank" / "ch01.py", "a") as f:
         f.write(BANK_ENTRY)
-    with open(copy / "tools" / "solutions" / "ch01.py", "a") as f:
+    with open(copy / "instructor" / "answers" / "ch01.py", "a") as f:
         f.write(SOLUTION_ENTRY)
-    for step in (["tools/exercise_fingerprints.py"], ["tools/sync_exercises.py", "1"]):
+    for step in (
+        ["-m", "instructor.build.exercise_fingerprints"],
+        ["-m", "instructor.build.sync_exercises", "1"],
+    ):
         run = _python(copy, *step)
         assert run.returncode == 0, run.stdout + run.stderr
     return copy
@@ -88,7 +91,7 @@ def test_the_new_check_accepts_the_solution_and_refuses_blank_and_wrong_answers(
         "import json, numpy as np\n"
         "from course_lib.exercises import check\n"
         "ns = {'np': np}\n"
-        "from tools.exercise_fingerprints import solutions\n"
+        "from instructor.build.exercise_fingerprints import solutions\n"
         "exec(solutions(1)[0]['vector_length'], ns)\n"
         "out = [check('vector_length', a) for a in (ns['answer_vector_length'], None, 12.0)]\n"
         "print(json.dumps([[r.ok, r.status] for r in out]))\n"

@@ -8,19 +8,25 @@ tests at the end are named after the failures an adversarial review found.
 
 import math
 import operator
+
+# ------------------------------------------------------------------ strategies
+import re
+import time
 import warnings
+from decimal import Decimal
 
 import numpy as np
 import pytest
+import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 from course_lib import frames, groups, rigid, so3
 from course_lib._arrays import as_direction, as_scalar, as_unit_axes, as_vector3, broadcast_batch
+from course_lib.exercises import EXERCISES, Value, alpha, check, get
 from course_lib.tolerance import TOL, check_tol, fmt_residual
-
-# ------------------------------------------------------------------ strategies
+from instructor.build import exercise_fingerprints as F
 
 finite = st.floats(allow_nan=False, allow_infinity=False)  # every magnitude, subnormals included
 moderate = st.floats(-1e3, 1e3, allow_nan=False)
@@ -501,18 +507,6 @@ def test_strings_none_and_complex_are_type_errors(fn):
 # traceback or a method of the student's object called. The bound is generous (the machine is
 # shared); benchmarks/bench_exercises.py shows the 1 s target.
 
-import re  # noqa: E402
-import sys  # noqa: E402
-import time  # noqa: E402
-from decimal import Decimal  # noqa: E402
-from pathlib import Path  # noqa: E402
-
-import sympy as sp  # noqa: E402
-
-from course_lib.exercises import EXERCISES, Value, alpha, check, get  # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from tools import exercise_fingerprints as F  # noqa: E402
 
 _BOUND = 5.0  # seconds of wall clock
 

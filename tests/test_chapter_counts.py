@@ -1,19 +1,19 @@
-"""Each chapter keeps what is on screen within issue 18's targets (tools/chapter_counts.py).
+"""Each chapter keeps what is on screen within issue 18's targets
+(instructor/build/chapter_counts.py).
 
 What "on screen" means is tested on small notebooks: a heading with
 ``"jp-MarkdownHeadingCollapsed": true`` folds every cell up to the next heading of the same or a
 higher level; a code cell whose input is hidden shows no code lines.
 """
 
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
 
+from instructor.build import chapter_counts as cc
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-import chapter_counts as cc  # noqa: E402
 
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 
@@ -118,6 +118,6 @@ def test_reading_minutes_follow_the_model_per_section(tmp_path):
 @pytest.mark.parametrize("path", [p for p in CHAPTERS if p.name[:2] in ("03", "05")], ids=str)
 def test_chapters_3_and_5_read_in_an_hour(path):
     """Issue 37: the main path of chapters 03 and 05 reads in 60 minutes or less (the model of
-    tools/chapter_counts.py, calibrated on the issue's reader)."""
+    instructor/build/chapter_counts.py, calibrated on the issue's reader)."""
     total = sum(sec["minutes"] for _, sec in cc.minutes(path))
     assert total <= 60, cc.minutes_report(path)

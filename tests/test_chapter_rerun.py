@@ -9,15 +9,14 @@ after it, fails here with the cell and both outputs. Cells marked NBVAL_IGNORE_O
 widgets, whose model ids change on every run) are compared on their text only.
 """
 
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
 
+from instructor.build import notebooks as nbtool
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
-import notebooks as nbtool  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))

@@ -11,7 +11,6 @@ import inspect
 import itertools
 import json
 import re
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -50,10 +49,9 @@ from course_lib.exercises import (
     y,
     yy,
 )
+from instructor.build import exercise_fingerprints as F
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from tools import exercise_fingerprints as F  # noqa: E402
 
 I3 = sp.eye(3)
 N2 = omega.dot(omega)
@@ -76,7 +74,7 @@ def mistakes():
 
 
 def right(name):
-    """The reference answer of ``name``, from tools/solutions (never written out in a test)."""
+    """The reference answer of ``name``, from instructor/answers (never written out in a test)."""
     return reference(name)[1]
 
 
@@ -168,8 +166,8 @@ def test_exercises_rejects_an_unknown_chapter_and_check_an_unknown_name():
 
 
 def test_stored_fingerprints_are_those_of_the_reference_solutions():
-    """tools/exercise_fingerprints.py --check on a sample: every exercise's default and 8 rows
-    of every variant table, recomputed from the solutions, are what the package holds (the
+    """instructor/build/exercise_fingerprints.py --check on a sample: every exercise's default and
+    8 rows of every variant table, recomputed from the solutions, are what the package holds (the
     whole of 22 tables of 1,024 rows takes minutes; ``--check`` does it)."""
     stored = EX._fingerprints()
     built = F.build(sample=lambda n: range(1, n, n // 8), jobs=1)

@@ -10,7 +10,8 @@ D = ["0123456789abcdef", "fedcba9876543210", "00112233445566aa", "aabbccddeeff00
 
 
 def _record(value, mistake):
-    """A record as tools/exercise_fingerprints.py writes one (a transform and a digest)."""
+    """A record as instructor/build/exercise_fingerprints.py writes one (a transform and a
+    digest)."""
     return {
         "size": 3,
         "value": [value],

@@ -1,4 +1,5 @@
-"""Tests of tools/sync_exercises.py: problem sets come from the bank; chapters point to them.
+"""Tests of instructor/build/sync_exercises.py: problem sets come from the bank; chapters point to
+them.
 
 The committed problem sets are exactly what the tool writes (each statement is written once, in
 the bank), the tool is idempotent, the cells carry the nbgrader metadata autograde needs, the
@@ -14,10 +15,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
+from course_lib.exercises import exercises
+from instructor.build import sync_exercises as sync
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from course_lib.exercises import exercises  # noqa: E402
-from tools import sync_exercises as sync  # noqa: E402
 
 CHAPTERS = [1, 2, 3, 4, 5]
 MARKER_WORDS = ("BEGIN SOLUTION", "END SOLUTION", "HIDDEN TESTS")
@@ -215,7 +216,7 @@ def test_generated_cells_pass_ruff(chapter, command, tmp_path):
     of a problem set: chapter 3's answers are symbolic, yet its set-up cell imports numpy for
     the student's own work.
     """
-    from tools import notebooks as nbtool
+    from instructor.build import notebooks as nbtool
 
     nb = _fresh(chapter)
     nbtool.put_setup_cell(nb, "https://github.com/example/rotations-course")

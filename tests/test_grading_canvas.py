@@ -1,6 +1,6 @@
-"""``make grades-canvas`` (grader/canvas.py) on a real nbgrader gradebook made with nbgrader's
-own Gradebook API: the Canvas import layout, missing submissions blank and listed (never 0),
-unknown students listed, a Canvas roster export's ids and column names reused."""
+"""``make grades-canvas`` (instructor/grading/canvas.py) on a real nbgrader gradebook made with
+nbgrader's own Gradebook API: the Canvas import layout, missing submissions blank and listed (never
+0), unknown students listed, a Canvas roster export's ids and column names reused."""
 
 from __future__ import annotations
 
@@ -13,11 +13,11 @@ from pathlib import Path
 import pytest
 from nbgrader.api import Gradebook
 
+from instructor.grading.canvas import IDENTITY, export, main, write_csv
+
 ROOT = Path(__file__).resolve().parents[1]
 # nbgrader 0.9.6's own add_submission warns of its autoflush (SQLAlchemy 2)
 pytestmark = pytest.mark.filterwarnings("ignore::sqlalchemy.exc.SAWarning")
-sys.path.insert(0, str(ROOT))
-from grader.canvas import IDENTITY, export, main, write_csv  # noqa: E402
 
 
 @pytest.fixture(autouse=True)
@@ -111,7 +111,7 @@ def test_bad_input_names_the_argument(tmp_path, capsys):
 def test_command_line_writes_csv_and_report(tmp_path):
     course = _course(tmp_path)
     done = subprocess.run(
-        [sys.executable, "-m", "grader.canvas", str(course)],
+        [sys.executable, "-m", "instructor.grading.canvas", str(course)],
         cwd=ROOT,
         capture_output=True,
         text=True,

@@ -23,12 +23,12 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from grading_helpers import TRUSTED_AUTOGRADE
+
+from instructor.grading.course import write_course
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
 
-from grader.course import write_course  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 BIN = Path(sys.executable).parent

@@ -1,4 +1,5 @@
-"""The Gradescope autograder (grader/gradescope.py, grader/gradescope_run.py), run as Gradescope
+"""The Gradescope autograder (instructor/grading/gradescope.py,
+instructor/grading/gradescope_run.py), run as Gradescope
 runs it: the zip extracted into ``<root>/source``, its ``prepare`` step (setup.sh's last line),
 then ``run_autograder`` once per submission, with ``<root>`` a temporary folder standing in
 for ``/autograder`` (``ROTATIONS_AUTOGRADER_ROOT``, for the tests only).
@@ -19,14 +20,12 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "release"))
-sys.path.insert(0, str(ROOT / "tests"))
-import leak_gate  # noqa: E402
+from instructor.grading import gradescope
+from instructor.grading.gradescope_run import student_id
+from instructor.release import leak_gate
 
-from grader import gradescope  # noqa: E402
-from grader.gradescope_run import student_id  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
+
 
 pytestmark = [pytest.mark.gradescope, pytest.mark.confined, pytest.mark.notebook_exec]
 PS = "ps01"
@@ -45,7 +44,8 @@ def autograder(tmp_path_factory):
         path.write_bytes(data)
     env = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top)}
     done = subprocess.run(
-        [sys.executable, str(top / "source/grader/gradescope_run.py"), "prepare"],
+        [sys.executable, "-m", "instructor.grading.gradescope_run", "prepare"],
+        cwd=top / "source",
         env=env,
         capture_output=True,
         text=True,
@@ -242,8 +242,8 @@ def test_student_code_sees_no_autograder_file_and_cannot_write_results(autograde
     text = next(graded.glob("*.ipynb")).read_text()
     seen = text.split("SEEN ", 1)[1].split("\\n", 1)[0]
     # in view: the installed course_lib only (what students have anyway), here the zip's copy
-    # that the grader imports; never tools/solutions, the problem set, course/ or results/
-    for name in ("tools", "problem_sets", "course", "results", "grader"):
+    # that the grader imports; never instructor/answers, the problem set, course/ or results/
+    for name in ("instructor", "problem_sets", "course", "results"):
         assert f"{autograder}/{name}/" not in seen and f"source/{name}/" not in seen, seen
     assert "SOLUTIONS" not in text and "BEGIN SOLUTION" not in text
     # what it wrote landed in the sandbox's own /tmp; the real results.json is the grader's
@@ -300,10 +300,12 @@ def test_zip_holds_the_secret_members_and_nothing_else_leaks(tmp_path):
         names = zf.namelist()
         files = {n: zf.read(n) for n in names}
     assert "setup.sh" in names and "run_autograder" in names
-    assert any(n.startswith("tools/solutions/") for n in names)
+    assert any(n.startswith("instructor/answers/") for n in names)
     assert gradescope.leak_check(files) == []
     # a solution line outside the SECRET members is caught
-    files["grader/extra.txt"] = files[next(n for n in names if n.startswith("tools/solutions/"))]
+    files["instructor/grading/extra.txt"] = files[
+        next(n for n in names if n.startswith("instructor/answers/ch"))
+    ]
     assert gradescope.leak_check(files)
 
 
@@ -334,7 +336,7 @@ def test_same_points_as_nbgrader_autograde_of_make_course(autograder, tmp_path):
     run_autograder: the same points for every exercise."""
     from nbgrader.api import Gradebook
 
-    from grader.course import write_course
+    from instructor.grading.course import write_course
 
     course = tmp_path / "course"
     write_course(course)
@@ -511,7 +513,8 @@ def test_the_graders_own_faults_exit_1_and_write_no_results(autograder):
 def _selftest(top, env=None):
     full = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top), **(env or {})}
     return subprocess.run(
-        [sys.executable, str(top / "source/grader/gradescope_run.py"), "selftest"],
+        [sys.executable, "-m", "instructor.grading.gradescope_run", "selftest"],
+        cwd=top / "source",
         env=full,
         capture_output=True,
         text=True,

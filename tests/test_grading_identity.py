@@ -18,20 +18,18 @@ cell, executed, its answers hard-wired to the numbers of the id the student work
 from __future__ import annotations
 
 import csv
-import sys
 from pathlib import Path
 
 import nbformat
 import pytest
+from test_grading_nbgrader import run
+
+from course_lib.exercises import exercises
+from course_lib.exercises._variants import table, variant_index
+from instructor.grading.course import write_course
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
-from test_grading_nbgrader import run  # noqa: E402
 
-from course_lib.exercises import exercises  # noqa: E402
-from course_lib.exercises._variants import table, variant_index  # noqa: E402
-from grader.course import write_course  # noqa: E402
 
 pytestmark = [pytest.mark.notebook_exec, pytest.mark.confined, pytest.mark.slow_grading]
 PS, CHAPTER = "ps01", 1

@@ -1,7 +1,7 @@
-"""The intake of a submission (grader/intake.py, grader/collect.py, issue 32): only a regular
-file of one name inside the submission folder is read, its size checked before reading; the
-Gradescope runner's choice of notebook and its notes for bad input, without nbgrader runs
-(those are in test_grading_gradescope.py and test_grading_intake_nbgrader.py)."""
+"""The intake of a submission (instructor/grading/intake.py, instructor/grading/collect.py, issue
+32): only a regular file of one name inside the submission folder is read, its size checked before
+reading; the Gradescope runner's choice of notebook and its notes for bad input, without nbgrader
+runs (those are in test_grading_gradescope.py and test_grading_intake_nbgrader.py)."""
 
 from __future__ import annotations
 
@@ -14,12 +14,12 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+from instructor.grading import gradescope_run as G
+from instructor.grading import intake
+from instructor.grading.intake import Refused, parse, pick, read_inside
 
-from grader import gradescope_run as G  # noqa: E402
-from grader import intake  # noqa: E402
-from grader.intake import Refused, parse, pick, read_inside  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
+
 
 NB = json.dumps({"cells": [], "metadata": {}, "nbformat": 4, "nbformat_minor": 5}).encode()
 EXPECTED = "ps01_rigid_body_motion.ipynb"
@@ -89,8 +89,7 @@ def test_kinds_are_named():
 
 MEMORY = """\
 import sys
-sys.path.insert(0, {root!r})
-from grader.intake import Refused, read_inside
+from instructor.grading.intake import Refused, read_inside
 try:
     read_inside({path!r}, {folder!r})
     print("READ")
@@ -107,7 +106,7 @@ def test_a_2_gb_file_is_refused_before_reading_regression_issue32(sub):
     with open(path, "wb") as f:
         f.truncate(2 * 2**30)  # sparse: no disk used
     code = MEMORY.format(root=str(ROOT), path=str(path), folder=str(sub))
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     note, peak_mb = done.stdout.strip().splitlines()
     assert "2048 MB, over the limit of 20 MB" in note, done.stdout + done.stderr
     assert int(peak_mb) < 100, peak_mb  # VmHWM: the interpreter alone is about 10 MB
@@ -214,13 +213,19 @@ def test_the_graders_own_fault_exits_1_and_writes_no_results(top, monkeypatch, c
 
 
 def test_the_zip_of_a_set_holds_only_its_chapters_solutions():
-    from grader import gradescope
+    from instructor.grading import gradescope
 
     for ps, chapter in (("ps01", "ch01"), ("ps04", "ch04")):
         names = gradescope.members(ps)
-        assert [n for n in names if n.startswith("tools/solutions/")] == [
-            f"tools/solutions/{chapter}.py"
+        assert [n for n in names if n.startswith("instructor/answers/ch")] == [
+            f"instructor/answers/{chapter}.py"
         ]
+        # beside it, the loader and the draws' shared code only: no answer in either
+        assert {n for n in names if n.startswith("instructor/answers/")} == {
+            f"instructor/answers/{chapter}.py",
+            "instructor/answers/__init__.py",
+            "instructor/answers/common.py",
+        }
         assert [n for n in names if n.startswith("problem_sets/")] == [
             f"problem_sets/{p.name}" for p in (ROOT / "problem_sets").glob(f"{ps}_*.ipynb")
         ]
@@ -228,7 +233,7 @@ def test_the_zip_of_a_set_holds_only_its_chapters_solutions():
 
 def test_collect_copies_only_regular_files_inside_the_students_folder(tmp_path):
     """nbgrader's collect (shutil.copytree) copied a symlink's target into submitted/."""
-    from grader.collect import copy_submission
+    from instructor.grading.collect import copy_submission
 
     src, dest = tmp_path / "inbound" / "alice+ps01+2026", tmp_path / "submitted" / "alice"
     src.mkdir(parents=True)
@@ -253,8 +258,8 @@ def test_cells_past_the_notebooks_time_budget_are_not_run_and_get_0_regression_i
     import nbformat
     from grading_helpers import TRUSTED_CONFIG
 
-    from course_lib.student import nbgrader_metadata
-    from grader import preprocessor as P
+    from instructor.build.student import nbgrader_metadata
+    from instructor.grading import preprocessor as P
 
     def grade_cell(gid, source):
         cell = nbformat.v4.new_code_cell(source)
@@ -325,7 +330,7 @@ def test_collect_refuses_a_student_folder_that_is_a_link(tmp_path, caplog):
     from nbgrader.auth import Authenticator
     from nbgrader.coursedir import CourseDirectory
 
-    from grader.collect import SafeCollect
+    from instructor.grading.collect import SafeCollect
 
     source = tmp_path / "source" / "ps01"
     source.mkdir(parents=True)
@@ -354,7 +359,7 @@ def test_regression_collect_refuses_a_folder_that_claims_another_student(tmp_pat
     collected it as alice's work, and its time beat every later submission of alice's."""
     import datetime
 
-    from grader.collect import claim_problem
+    from instructor.grading.collect import claim_problem
 
     now = datetime.datetime(2026, 12, 7, tzinfo=datetime.timezone.utc)
     folder = tmp_path / "daemon+ps01+x"

@@ -1,7 +1,8 @@
 """The intake on nbgrader's paths (issue 32): ``nbgrader collect`` from the exchange and
-``nbgrader autograde`` of ``submitted/`` with the course's configuration (grader/intake.py,
-grader/collect.py, ConfinedExporter). A submission that is not a regular file of one name
-inside the student's folder was graded as the student's own notebook: full marks for a link
+``nbgrader autograde`` of ``submitted/`` with the course's configuration
+(instructor/grading/intake.py,
+instructor/grading/collect.py, ConfinedExporter). A submission that is not a regular file of one
+name inside the student's folder was graded as the student's own notebook: full marks for a link
 to the instructor's solved copy. Real nbgrader, marked ``slow_grading`` (CI's make test-slow).
 """
 
@@ -15,13 +16,13 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from grading_helpers import TRUSTED_AUTOGRADE
+
+from instructor.grading.course import write_course
+from instructor.grading.intake import NOTE
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
 
-from grader.course import write_course  # noqa: E402
-from grader.intake import NOTE  # noqa: E402
 
 pytestmark = [pytest.mark.slow_grading, pytest.mark.notebook_exec]
 NBGRADER = Path(sys.executable).with_name("nbgrader")

@@ -24,10 +24,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
+from course_lib.exercises import exercises
+from instructor.grading.course import write_course
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from course_lib.exercises import exercises  # noqa: E402
-from grader.course import write_course  # noqa: E402
 
 pytestmark = [pytest.mark.notebook_exec, pytest.mark.confined]
 NBGRADER = Path(sys.executable).with_name("nbgrader")
@@ -90,7 +90,7 @@ def _snoop(course):
     return f"""\
 import glob, os
 seen = glob.glob({str(course)!r} + "/**", recursive=True)
-for p in seen + glob.glob({str(ROOT)!r} + "/tools/**"):
+for p in seen + glob.glob({str(ROOT)!r} + "/instructor/**"):
     if os.path.isfile(p):
         print("SEEN", p)
         print(open(p, errors="replace").read()[:20000])

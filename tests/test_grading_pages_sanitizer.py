@@ -21,7 +21,7 @@ import pytest
 from nbconvert.exporters import HTMLExporter
 from traitlets.config import Config
 
-from grader.pages import InertStudentHTML, _keep_url, clean_html
+from instructor.grading.pages import InertStudentHTML, _keep_url, clean_html
 
 SCRIPT = "alert(1)"
 # OWASP XSS Filter Evasion Cheat Sheet: the spellings of a script URL.
@@ -115,8 +115,8 @@ def _exporter():
     c = Config()
     c.HTMLExporter.sanitize_html = True
     c.HTMLExporter.filters = {
-        "markdown2html": "grader.pages.safe_markdown2html",
-        "clean_html": "grader.pages.clean_html",
+        "markdown2html": "instructor.grading.pages.safe_markdown2html",
+        "clean_html": "instructor.grading.pages.clean_html",
     }
     return HTMLExporter(config=c)
 

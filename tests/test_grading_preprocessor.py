@@ -1,5 +1,6 @@
-"""The course's nbgrader preprocessors on their own (grader/preprocessor.py): the output cap,
-grading metadata a student added, and a kernel that dies in an answer cell (issue 17)."""
+"""The course's nbgrader preprocessors on their own (instructor/grading/preprocessor.py): the
+output cap, grading metadata a student added, and a kernel that dies in an answer cell (issue
+17)."""
 
 from __future__ import annotations
 
@@ -11,13 +12,12 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from grading_helpers import TRUSTED_CONFIG
+
+from instructor.build.student import nbgrader_metadata
+from instructor.grading import preprocessor as P
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grading_helpers import TRUSTED_CONFIG  # noqa: E402
-
-from course_lib.student import nbgrader_metadata  # noqa: E402
-from grader import preprocessor as P  # noqa: E402
 
 
 def _stream(text):

@@ -1,11 +1,13 @@
-"""The privilege-drop confinement (grader/privdrop.py) under Docker's constraint, as root.
+"""The privilege-drop confinement (instructor/grading/privdrop.py) under Docker's constraint, as
+root.
 
 Every run of student code here goes through ``tests/docker_seccomp.py``: root, Docker's 14
 capabilities, a seccomp filter that refuses new user namespaces (``EPERM`` for ``unshare`` and
 ``clone`` with a namespace flag, ``ENOSYS`` for ``clone3``), and the file system laid out as
 a Gradescope image has it (``--view``: ``/root`` empty but for the Python installation, the
 checkout closed to others but for its ``.venv``). bubblewrap cannot start there, so
-:func:`grader.sandbox.confinement` picks ``privdrop``: the first test prints the evidence.
+:func:`instructor.grading.sandbox.confinement` picks ``privdrop``: the first test prints the
+evidence.
 
 In ``make test``: the evidence, one kernel probed from the inside (ids, capabilities, limits,
 environment, home, what it can read and write, a bounded fork test, its processes and files
@@ -24,12 +26,12 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from docker_seccomp import command
+
+from instructor.grading import privdrop, sandbox
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from docker_seccomp import command  # noqa: E402
 
-from grader import privdrop, sandbox  # noqa: E402
 
 # One worker runs this file (make test-slow's --dist loadgroup): the tests count every process
 # of the kernels' uids, which a second worker's privdrop kernel would be.
@@ -47,7 +49,7 @@ def under_docker(argv, timeout=600, env=None, cwd=ROOT):
 
 EVIDENCE = """\
 import ctypes, json, os, subprocess
-from grader.sandbox import bubblewrap_problem, confinement
+from instructor.grading.sandbox import bubblewrap_problem, confinement
 libc = ctypes.CDLL(None, use_errno=True)
 def errno_of(rc):
     return os.strerror(ctypes.get_errno()) if rc == -1 else "allowed"
@@ -93,14 +95,14 @@ def attempt(key, fn):
         out[key] = repr(fn())[:200]
     except Exception as err:
         out[key] = "refused " + type(err).__name__
-attempt("list_solutions", lambda: os.listdir(REPO + "/tools/solutions"))
-attempt("read_solutions", lambda: open(REPO + "/tools/solutions/ch01.py").read())
-attempt("read_grader", lambda: open(REPO + "/grader/verify.py").read())
+attempt("list_solutions", lambda: os.listdir(REPO + "/instructor/answers"))
+attempt("read_solutions", lambda: open(REPO + "/instructor/answers/ch01.py").read())
+attempt("read_grader", lambda: open(REPO + "/instructor/grading/verify.py").read())
 attempt("list_repo", lambda: os.listdir(REPO))
 attempt("read_source", lambda: open(COURSE + "/source/ps01/ps01.ipynb").read())
 attempt("list_course", lambda: os.listdir(COURSE))
 attempt("write_gradebook", lambda: open(COURSE + "/gradebook.db", "a").write("x"))
-attempt("write_grader", lambda: open(REPO + "/grader/verify.py", "a").write("x"))
+attempt("write_grader", lambda: open(REPO + "/instructor/grading/verify.py", "a").write("x"))
 attempt("environ1", lambda: open("/proc/1/environ", "rb").read())
 attempt("grader_environ", lambda: open(f"/proc/{GRADER}/environ", "rb").read())
 import ipykernel.connect
@@ -132,7 +134,7 @@ print("PROBE" + json.dumps(out))
 
 DRIVER = """\
 import asyncio, json, os, sys
-from grader import sandbox
+from instructor.grading import sandbox
 async def main(code, hide):
     km = sandbox.ConfinedKernelManager(hide=hide)
     await km.start_kernel()
@@ -148,7 +150,7 @@ async def main(code, hide):
         kc.stop_channels()
         uid, home = km._uid, km._home
         await km.shutdown_kernel(now=True)
-    from grader.privdrop import _pids
+    from instructor.grading.privdrop import _pids
     left = _pids(uid)  # live processes (a zombie is dead already)
     files = [f for f in (f"/tmp/left-by-kernel-{uid}", home) if os.path.exists(f)]
     print("AFTER" + json.dumps({"processes": left, "files": files, "kind": km.kind}))
@@ -229,18 +231,18 @@ def test_the_process_limit_binds_and_nothing_of_the_kernel_outlives_it(probe):
 
 READABLE = """\
 import json, os, sys, tempfile
-from grader import privdrop, sandbox
+from instructor.grading import privdrop, sandbox
 top = tempfile.mkdtemp(prefix="hidden-")
 os.chmod(top, 0o755)
-os.makedirs(top + "/tools/solutions")
-open(top + "/tools/solutions/ch01.py", "w").write("SOLUTIONS = {}")
-for folder in (top + "/tools", top + "/tools/solutions"):
+os.makedirs(top + "/instructor/answers")
+open(top + "/instructor/answers/ch01.py", "w").write("SOLUTIONS = {}")
+for folder in (top + "/instructor", top + "/instructor/answers"):
     os.chmod(folder, 0o755)
-os.chmod(top + "/tools/solutions/ch01.py", 0o644)
+os.chmod(top + "/instructor/answers/ch01.py", 0o644)
 first = sandbox.hidden_problem([top])[0]
 from traitlets.config import Config
 from nbgrader.converters.base import NbGraderException
-from grader.preprocessor import ConfinedExporter
+from instructor.grading.preprocessor import ConfinedExporter
 try:  # what `nbgrader autograde` does first, before any submission is read
     ConfinedExporter(config=Config({"ConfinedKernelManager": {"hide": [top]}}))
     refused = None
@@ -403,7 +405,7 @@ def test_nbgrader_autograde_of_a_class_under_dockers_constraint(tmp_path):
     import nbformat
     from nbgrader.api import Gradebook
 
-    from grader.course import write_course
+    from instructor.grading.course import write_course
 
     course = tmp_path / "course"
     write_course(course)
@@ -418,14 +420,14 @@ def test_nbgrader_autograde_of_a_class_under_dockers_constraint(tmp_path):
     assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
     name, solved = _notebook(course / "source" / PS)
     _, blank = _notebook(course / "release" / PS)
-    places = [str(course), str(ROOT / "tools"), str(ROOT / "problem_sets")]
-    writes = [str(course / "gradebook.db"), str(ROOT / "grader" / "verify.py")]
+    places = [str(course), str(ROOT / "instructor"), str(ROOT / "problem_sets")]
+    writes = [str(course / "gradebook.db"), str(ROOT / "instructor" / "grading" / "verify.py")]
     writes.append(str(course / "source" / PS / name))
     subs = _attacks(solved, blank, places, writes)
     for sid, nb in subs.items():
         (course / "submitted" / sid / PS).mkdir(parents=True)
         nbformat.write(nb, course / "submitted" / sid / PS / name)
-    before = _digest(course / "source", ROOT / "grader", ROOT / "tools")
+    before = _digest(course / "source", ROOT / "instructor" / "grading", ROOT / "instructor")
     argv = [str(NBGRADER), "autograde", PS, "--create", f"--Execute.timeout={CELL_TIMEOUT}"]
     done = under_docker(argv, env=env, cwd=course)
     log = done.stdout + done.stderr
@@ -442,7 +444,9 @@ def test_nbgrader_autograde_of_a_class_under_dockers_constraint(tmp_path):
     assert "fork refused after" in bomb, bomb[:2000]
     assert "memory refused" in _outputs(course / "autograded" / "p_memory" / PS / name)
     assert (course / "autograded" / "p_flood" / PS / name).stat().st_size < 2_000_000
-    assert _digest(course / "source", ROOT / "grader", ROOT / "tools") == before
+    assert (
+        _digest(course / "source", ROOT / "instructor" / "grading", ROOT / "instructor") == before
+    )
     assert _kernel_uids_idle()
 
 
@@ -453,7 +457,7 @@ def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
     /autograder: the same cases, and an attack on results.json and the grader's files."""
     import nbformat
 
-    from grader import gradescope
+    from instructor.grading import gradescope
 
     top = tmp_path / "autograder"
     for member, data in gradescope.members(PS).items():
@@ -461,13 +465,14 @@ def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(data)
     env = {**os.environ, "ROTATIONS_AUTOGRADER_ROOT": str(top)}
-    script = str(top / "source" / "grader" / "gradescope_run.py")
-    done = subprocess.run([sys.executable, script, "prepare"], env=env, capture_output=True)
+    script = str(top / "source" / "instructor" / "grading" / "gradescope_run.py")
+    prepare = [sys.executable, "-m", "instructor.grading.gradescope_run", "prepare"]
+    done = subprocess.run(prepare, cwd=top / "source", env=env, capture_output=True)
     assert done.returncode == 0, done.stderr[-3000:]
     name, solved = _notebook(top / "course" / "source" / PS)
     _, blank = _notebook(top / "course" / "release" / PS)
     writes = [str(top / "results" / "results.json"), script]
-    writes.append(str(top / "source" / "tools" / "solutions" / "ch01.py"))
+    writes.append(str(top / "source" / "instructor" / "answers" / "ch01.py"))
     subs = _attacks(solved, blank, [str(top)], writes)
     # the fork bomb and the memory hog in one submission here (each alone above, through
     # nbgrader; the flood is cut in the grader's process, whatever the confinement: above, and

@@ -1,8 +1,8 @@
-"""The confined kernel (grader/sandbox.py) from the inside, with the real ``bwrap``.
+"""The confined kernel (instructor/grading/sandbox.py) from the inside, with the real ``bwrap``.
 
 Issue 17's sandbox escape: the kernel read the connection file of an unconfined kernel of the
 grading user (``--ro-bind / /``) and reached it over host loopback (no ``--unshare-net``), read
-other checkouts' ``tools/solutions``, classmates' submissions and ``/proc/1/environ``. One
+other checkouts' ``instructor/answers``, classmates' submissions and ``/proc/1/environ``. One
 confined kernel is started (about 2 s) and probes what it can reach.
 """
 
@@ -20,10 +20,10 @@ from pathlib import Path
 import pytest
 from jupyter_core.paths import jupyter_runtime_dir
 
+import course_lib
+from instructor.grading import sandbox
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-import course_lib  # noqa: E402
-from grader import sandbox  # noqa: E402
 
 confined = pytest.mark.confined  # the confinement itself: needs bubblewrap
 
@@ -114,7 +114,7 @@ async def _run_confined(code, hide):
 @pytest.fixture(scope="module")
 def probe(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("outside")
-    solutions = tmp / "other-checkout" / "tools" / "solutions"
+    solutions = tmp / "other-checkout" / "instructor" / "answers"
     solutions.mkdir(parents=True)
     (solutions / "ch01.py").write_text("SOLUTIONS = {}\n")
     runtime = tmp / "runtime"
@@ -128,7 +128,7 @@ def probe(tmp_path_factory):
     thread.start()
     names = {
         "SOLUTIONS": str(solutions),
-        "REPO_SOLUTIONS": str(ROOT / "tools" / "solutions"),
+        "REPO_SOLUTIONS": str(ROOT / "instructor" / "answers"),
         "CONNECTION": str(connection),
         "RUNTIME": str(runtime),
         "PORT": server.getsockname()[1],

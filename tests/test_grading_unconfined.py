@@ -19,9 +19,9 @@ from pathlib import Path
 
 import pytest
 
+from instructor.grading.course import write_course
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grader.course import write_course  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 BIN = Path(sys.executable).parent
@@ -37,7 +37,7 @@ def no_bwrap_env(**extra):
 
 
 def test_the_confinement_probe_names_the_missing_bwrap():
-    code = "from grader.sandbox import confinement_problem as p; print(p())"
+    code = "from instructor.grading.sandbox import confinement_problem as p; print(p())"
     done = subprocess.run(
         [sys.executable, "-c", code], cwd=ROOT, env=no_bwrap_env(), capture_output=True, text=True
     )
@@ -148,7 +148,7 @@ def test_opted_in_it_grades_unconfined_and_a_forced_regrade_refused_loses_nothin
 
 def test_make_course_says_autograde_will_refuse(tmp_path):
     done = subprocess.run(
-        [sys.executable, "-m", "grader.course", str(tmp_path / "course")],
+        [sys.executable, "-m", "instructor.grading.course", str(tmp_path / "course")],
         cwd=ROOT,
         env=no_bwrap_env(),
         capture_output=True,

@@ -10,19 +10,17 @@ own work gets full marks.
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import pytest
+from test_grading_nbgrader import run
+
+from course_lib.exercises import exercises, variants_enabled
+from course_lib.exercises._variants import table, variant_index
+from instructor.grading.course import write_course
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
-from test_grading_nbgrader import run  # noqa: E402
 
-from course_lib.exercises import exercises, variants_enabled  # noqa: E402
-from course_lib.exercises._variants import table, variant_index  # noqa: E402
-from grader.course import write_course  # noqa: E402
 
 pytestmark = [pytest.mark.notebook_exec, pytest.mark.confined, pytest.mark.slow_grading]
 PS, CHAPTER = "ps04", 4

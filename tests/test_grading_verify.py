@@ -1,10 +1,10 @@
 """The grader's side, without nbgrader: records read with a whitelist, verdicts against the
-instructor's solutions at fresh random points (grader/records.py, grader/verify.py), the
+instructor's solutions at fresh random points (instructor/grading/records.py,
+instructor/grading/verify.py), the
 record a check cell leaves (course_lib/record.py) and the confined kernel's command."""
 
 from __future__ import annotations
 
-import sys
 import time
 from pathlib import Path
 
@@ -12,15 +12,15 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from course_lib import exercise_bank
+from course_lib.exercises import EXERCISES, alpha, check
+from course_lib.exercises import _engine as E
+from course_lib.record import MIME, CheckFailed, answer_record
+from instructor.build.exercise_fingerprints import solutions
+from instructor.grading import records, sandbox, verify
+from instructor.grading.records import Unreadable, parse
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from course_lib import exercise_bank  # noqa: E402
-from course_lib.exercises import EXERCISES, alpha, check  # noqa: E402
-from course_lib.exercises import _engine as E  # noqa: E402
-from course_lib.record import MIME, CheckFailed, answer_record  # noqa: E402
-from grader import records, sandbox, verify  # noqa: E402
-from grader.records import Unreadable, parse  # noqa: E402
-from tools.exercise_fingerprints import solutions  # noqa: E402
 
 NAMES = list(EXERCISES)
 
@@ -203,7 +203,7 @@ def test_the_confined_kernel_command_is_an_allow_list_without_network_or_privile
 def test_make_course_writes_the_config_and_every_problem_set_and_refuses_stale_check_cells(
     tmp_path,
 ):
-    from grader import course
+    from instructor.grading import course
 
     names = course.write_course(tmp_path / "c")
     assert names == [p.name[:4] for p in sorted((ROOT / "problem_sets").glob("ps*.ipynb"))]

@@ -3,28 +3,27 @@ read strictly, and no check says ✓ on numbers that may not be the student's.
 
 course_lib's side (:mod:`course_lib.exercises._identity`): normalisation, the e-mail domain,
 the precedence of the ids, the check without an id. The grader's side
-(:mod:`grader.identity`, :mod:`grader.gradescope_run`): Canvas and plain rosters, their
-errors, the unknown id, the identity report, the leak gate.
+(:mod:`instructor.grading.identity`, :mod:`instructor.grading.gradescope_run`): Canvas and plain
+rosters, their errors, the unknown id, the identity report, the leak gate.
 """
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
+from course_lib import exercises as X
+from course_lib.exercises import _identity as I
+from course_lib.exercises import check, parameters, set_student_id, student_id
+from course_lib.record import MIME
+from instructor.grading.gradescope_run import identity
+from instructor.grading.gradescope_run import student_id as folder_of
+from instructor.grading.identity import Roster, RosterError, load, read_roster, write_report
+from instructor.grading.verify import expected
 
-from course_lib import exercises as X  # noqa: E402
-from course_lib.exercises import _identity as I  # noqa: E402
-from course_lib.exercises import check, parameters, set_student_id, student_id  # noqa: E402
-from course_lib.record import MIME  # noqa: E402
-from grader.gradescope_run import identity  # noqa: E402
-from grader.gradescope_run import student_id as folder_of  # noqa: E402
-from grader.identity import Roster, RosterError, load, read_roster, write_report  # noqa: E402
-from grader.verify import expected  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
+
 
 KEY = "alice7@example.edu"
 VARIED = [ex for ex in X.exercises() if ex.variants is not None]
@@ -246,10 +245,8 @@ def test_the_identity_report_keeps_one_row_per_student_and_set(tmp_path):
 
 
 def test_the_leak_gate_refuses_a_roster_for_students_and_lets_the_gradescope_zip_hold_it(tmp_path):
-    sys.path.insert(0, str(ROOT / "release"))
-    import leak_gate
-
-    from grader import gradescope
+    from instructor.grading import gradescope
+    from instructor.release import leak_gate
 
     report = leak_gate.Report()
     leak_gate.scan_data(
@@ -276,9 +273,9 @@ def test_a_roster_that_cannot_be_trusted_grades_nothing(tmp_path):
     from nbgrader.converters.base import NbGraderException
     from traitlets.config import Config
 
-    from grader import gradescope
-    from grader.course import write_course
-    from grader.preprocessor import ConfinedExporter
+    from instructor.grading import gradescope
+    from instructor.grading.course import write_course
+    from instructor.grading.preprocessor import ConfinedExporter
 
     bad = _roster(tmp_path, "a@x.edu,alice\nb@x.edu,alice\n")
     with pytest.raises(RosterError, match="line 2"):
@@ -292,7 +289,7 @@ def test_a_roster_that_cannot_be_trusted_grades_nothing(tmp_path):
 
 
 def test_the_canvas_report_lists_the_students_whose_id_needs_a_look():
-    from grader.canvas import IDENTITY, Export
+    from instructor.grading.canvas import IDENTITY, Export
 
     row = {"assignment": "ps01", "student": "bob9", "graded_as": "bob9@x.edu", "how": "roster"}
     out = Export([*IDENTITY, "ps01"], [["Points Possible"]])
@@ -307,7 +304,7 @@ def test_regression_shown_numbers_reads_malformed_cells_without_failing():
     nbgrader drop the student (test_grading_nbgrader's malformed-metadata submission)."""
     import nbformat
 
-    from grader.id_preprocessors import SHOWN, ShownNumbers
+    from instructor.grading.id_preprocessors import SHOWN, ShownNumbers
 
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("x") for _ in range(4)])
     cells = nb.cells

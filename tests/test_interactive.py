@@ -18,13 +18,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from mpl_toolkits.mplot3d import proj3d  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from mpl_toolkits.mplot3d import proj3d
 
-from course_lib import interactive, plotting, so3  # noqa: E402
-from course_lib.interactive import (  # noqa: E402
+from course_lib import interactive, plotting, so3
+from course_lib.interactive import (
     AZIMUTH_RANGE,
     POLAR_RANGE,
     Q0,
@@ -40,14 +40,14 @@ from course_lib.interactive import (  # noqa: E402
     rotation_explorer,
     spin_animation,
 )
-from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
-from course_lib.rodrigues import (  # noqa: E402
+from course_lib.plotting.display import figure_alt_and_png
+from course_lib.rodrigues import (
     axis_from_spherical,
     rodrigues_terms,
     rodrigues_vectors,
     rotated_frame,
 )
-from course_lib.tolerance import TOL  # noqa: E402
+from course_lib.tolerance import TOL
 
 
 @pytest.fixture(autouse=True)

@@ -11,16 +11,16 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-import sympy as sp  # noqa: E402
-from hypothesis import given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from course_lib import euler, interactive, plotting  # noqa: E402
-from course_lib import symbolic_orientation as so  # noqa: E402
-from course_lib.interactive import (  # noqa: E402
+from course_lib import euler, interactive, plotting
+from course_lib import symbolic_orientation as so
+from course_lib.interactive import (
     PITCH_RANGE,
     ROLL_RANGE,
     YAW_RANGE,
@@ -30,7 +30,7 @@ from course_lib.interactive import (  # noqa: E402
     rates_matrix,
     turn_axes,
 )
-from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
+from course_lib.plotting.display import figure_alt_and_png
 
 degrees = st.floats(-180.0, 180.0, allow_nan=False)
 pitches = st.floats(-90.0, 90.0, allow_nan=False)

@@ -2,7 +2,8 @@
 
 Those are the Python sources and the notebooks: ruff reads the code cells of .ipynb files
 itself (magics such as ``%config`` are understood), so the notebooks follow the same rules.
-Their generated cells are ruff-clean at the source (tools/notebooks.py, tools/sync_exercises.py;
+Their generated cells are ruff-clean at the source (instructor/build/notebooks.py,
+instructor/build/sync_exercises.py;
 tests/test_exercises_sync.py checks them on their own).
 
 The paths come from the Makefile's ``LINT_PATHS`` line, so `make lint` and this test always

@@ -24,7 +24,7 @@ def venv_only_env():
 
 def test_regression_site_build_without_npm_names_npm_instead_of_a_traceback(tmp_path):
     code = (
-        "import sys; sys.path.insert(0, 'site'); import build; "
+        "from instructor.build import website as build; "
         f"build.DEPS = __import__('pathlib').Path({str(tmp_path)!r}); build.install_scripts()"
     )
     done = subprocess.run(

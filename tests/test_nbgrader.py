@@ -1,14 +1,14 @@
 """The real nbgrader round trip (nbgrader 0.9.6, pinned in environment.txt).
 
-In a course directory written by ``make course`` (grader/course.py: the confined kernel and the
-grader's preprocessors in its nbgrader_config.py):
+In a course directory written by ``make course`` (instructor/grading/course.py: the confined kernel
+and the grader's preprocessors in its nbgrader_config.py):
 
 1. ``nbgrader generate_assignment`` accepts every problem set as it is (no marker word in the
    prose, balanced markers, unique grade ids) and releases copies without the solutions or the
    hidden tests.
 2. ``nbgrader autograde`` of the problem sets (``problem_sets/``, written by
-   tools/sync_exercises.py) gives the instructor's notebooks full marks, more than 0, and the
-   released copies 0; an instructor's hidden test in a check cell runs.
+   instructor/build/sync_exercises.py) gives the instructor's notebooks full marks, more than 0,
+   and the released copies 0; an instructor's hidden test in a check cell runs.
 3. ``nbgrader validate`` fails on a released (blank) copy with one line per failed check that
    holds the whole hint, and no output of a check cell reads as a (partial) score.
 """
@@ -22,13 +22,13 @@ from pathlib import Path
 
 import nbformat
 import pytest
+from grading_helpers import TRUSTED_AUTOGRADE
+
+from course_lib.exercises import exercises
+from instructor.grading.course import write_course
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-from grading_helpers import TRUSTED_AUTOGRADE  # noqa: E402
 
-from course_lib.exercises import exercises  # noqa: E402
-from grader.course import write_course  # noqa: E402
 
 pytestmark = pytest.mark.notebook_exec
 NBGRADER = Path(sys.executable).with_name("nbgrader")

@@ -1,7 +1,7 @@
 """The chapter and problem-set notebooks stay lean and stable, and open wherever a class works.
 
-`make notebooks` (tools/notebooks.py) puts the setup cell first, executes and cleans every
-chapter and problem set; these tests check its result on the committed notebooks, one property
+`make notebooks` (instructor/build/notebooks.py) puts the setup cell first, executes and cleans
+every chapter and problem set; these tests check its result on the committed notebooks, one property
 at a time, and the tool itself on small notebooks.
 """
 
@@ -18,12 +18,11 @@ import pytest
 from IPython.core.inputtransformer2 import TransformerManager
 from PIL import Image
 
+from instructor.build import course_links
+from instructor.build import notebooks as nbtool
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import course_links  # noqa: E402
-
-import notebooks as nbtool  # noqa: E402
 
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9]*.ipynb")) + sorted(
     (ROOT / "problem_sets").glob("ps[0-9]*.ipynb")

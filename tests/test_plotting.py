@@ -4,17 +4,17 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import importlib  # noqa: E402
-import inspect  # noqa: E402
-import io  # noqa: E402
-from pathlib import Path  # noqa: E402
+import importlib
+import inspect
+import io
+from pathlib import Path
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from plotting_helpers import _arrows, _render  # noqa: E402
+import numpy as np
+import pytest
+from plotting_helpers import _arrows, _render
 
-from course_lib import _arrays, plotting, so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import _arrays, plotting, so3
+from course_lib.plotting import (
     axes2d,
     axes3d,
     axes_row,
@@ -26,7 +26,7 @@ from course_lib.plotting import (  # noqa: E402
     draw_point,
     draw_vector,
 )
-from course_lib.tolerance import check_tol  # noqa: E402
+from course_lib.tolerance import check_tol
 
 # Every public name of the single module plotting.py (its __all__ and its other constants).
 OLD_NAMES = [

@@ -4,21 +4,21 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import io  # noqa: E402
+import io
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from hypothesis import settings  # noqa: E402
-from plotting_helpers import (  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from hypothesis import settings
+from plotting_helpers import (
     _axis_labels_3d,
     _decorations_2d,
     _outside_canvas,
     _render,
 )
 
-from course_lib import so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import so3
+from course_lib.plotting import (
     DPI,
     TITLE_SIZE,
     axes2d,

@@ -6,12 +6,12 @@ import io
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import pytest  # noqa: E402
-from PIL import Image  # noqa: E402
+import matplotlib.pyplot as plt
+import pytest
+from PIL import Image
 
-from course_lib import plotting  # noqa: E402
-from course_lib.plotting.display import figure_alt_and_png  # noqa: E402
+from course_lib import plotting
+from course_lib.plotting.display import figure_alt_and_png
 
 ALT = 'Figure: the frame A and a point "p" in it.'
 

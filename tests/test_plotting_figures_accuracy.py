@@ -5,20 +5,20 @@ import matplotlib
 matplotlib.use("Agg")
 
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from hypothesis import settings  # noqa: E402
-from plotting_helpers import (  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from hypothesis import settings
+from plotting_helpers import (
     _render,
 )
 
-from course_lib import so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import so3
+from course_lib.plotting import (
     plot_convergence,
     plot_error_curves,
 )
-from course_lib.tolerance import TOL  # noqa: E402
+from course_lib.tolerance import TOL
 
 FAST = settings(max_examples=25, deadline=None)
 

@@ -5,12 +5,12 @@ import matplotlib
 matplotlib.use("Agg")
 
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from hypothesis import assume, given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-from plotting_helpers import (  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from plotting_helpers import (
     _arrows,
     _ax_texts,
     _position,
@@ -21,8 +21,8 @@ from plotting_helpers import (  # noqa: E402
     finite,
 )
 
-from course_lib import so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import so3
+from course_lib.plotting import (
     axes2d,
     axes3d,
     draw_pendulum,
@@ -30,7 +30,7 @@ from course_lib.plotting import (  # noqa: E402
     plot_rodrigues_circle,
     plot_spinning_body,
 )
-from course_lib.tolerance import TOL  # noqa: E402
+from course_lib.tolerance import TOL
 
 FAST = settings(max_examples=25, deadline=None)
 

@@ -4,12 +4,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from matplotlib.colors import to_rgb  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.colors import to_rgb
 
-from course_lib.plotting import euler_steps  # noqa: E402
-from course_lib.plotting.primitives import Arrow  # noqa: E402
+from course_lib.plotting import euler_steps
+from course_lib.plotting.primitives import Arrow
 
 
 def _arrows(ax):

@@ -5,12 +5,12 @@ import matplotlib
 matplotlib.use("Agg")
 
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from hypothesis import given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-from mpl_toolkits.mplot3d import proj3d  # noqa: E402
-from plotting_helpers import (  # noqa: E402
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from mpl_toolkits.mplot3d import proj3d
+from plotting_helpers import (
     _arrows,
     _render,
     _rotation,
@@ -19,8 +19,8 @@ from plotting_helpers import (  # noqa: E402
     vec3,
 )
 
-from course_lib import so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import so3
+from course_lib.plotting import (
     DPI,
     FRAME_COLORS,
     Drawn,
@@ -33,7 +33,7 @@ from course_lib.plotting import (  # noqa: E402
     draw_segment,
     draw_vector,
 )
-from course_lib.tolerance import TOL  # noqa: E402
+from course_lib.tolerance import TOL
 
 FAST = settings(max_examples=25, deadline=None)
 

@@ -5,11 +5,11 @@ import matplotlib
 matplotlib.use("Agg")
 
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
-from hypothesis import assume, given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-from plotting_helpers import (  # noqa: E402
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from plotting_helpers import (
     _arrows,
     _render,
     _rotation,
@@ -19,17 +19,17 @@ from plotting_helpers import (  # noqa: E402
     seeds,
     vec3,
 )
-from scipy.spatial.transform import Rotation  # noqa: E402
+from scipy.spatial.transform import Rotation
 
-from course_lib import so3  # noqa: E402
-from course_lib.plotting import (  # noqa: E402
+from course_lib import so3
+from course_lib.plotting import (
     axes2d,
     axes3d,
     draw_arc,
     draw_box,
     draw_plane,
 )
-from course_lib.tolerance import TOL  # noqa: E402
+from course_lib.tolerance import TOL
 
 FAST = settings(max_examples=25, deadline=None)
 

@@ -10,19 +10,16 @@ issue's docstring leak), and on nbgrader's markers and a solutions folder.
 
 import shutil
 import subprocess
-import sys
 import zipfile
 from pathlib import Path
 
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "release"))
+from instructor.release import leak_gate, make_release, student_edition
 
-import leak_gate  # noqa: E402
-import make_release  # noqa: E402
-import student_edition  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
+
 
 CELL_WITH_REGION = (
     "answer_x = None\n### BEGIN SOLUTION\nhelper_value = sp.Rational(42, 17) * omega_hat\n"
@@ -82,7 +79,7 @@ def test_the_needles_hold_every_worked_solution(needles):
     assert needles.regions >= 30 and len(needles.lines) >= 150
     from_files = [
         line.strip()
-        for path in sorted((ROOT / "tools" / "solutions").glob("*.py"))
+        for path in sorted((ROOT / "instructor" / "answers").glob("*.py"))
         for line, _ in leak_gate._solutions_file_lines(path)
     ]
     assert len(from_files) >= 100
@@ -114,7 +111,10 @@ def test_the_edition_is_a_repository_of_its_own_with_one_commit(built):
 
 def test_the_edition_holds_no_instructor_tool_and_no_answer_test(built):
     student = built[0] / "student"
-    assert not (student / "tools").exists() and not (student / "course_lib" / "student.py").exists()
+    assert (
+        not (student / "instructor").exists()
+        and not (student / "course_lib" / "student.py").exists()
+    )
     tests = {p.name for p in (student / "tests").glob("test_*.py")}
     assert "test_exercises.py" not in tests and "test_student.py" not in tests
     assert {"test_so3.py", "test_interactive.py"} <= tests
@@ -156,7 +156,7 @@ def test_the_student_readme_covers_every_way_in_and_the_round_trip(built):
     ):
         assert words in readme, words
     assert "@" not in readme.replace("user.email", ""), "a placeholder left in the README"
-    assert "instructor edition" not in readme.lower() and "tools/solutions" not in readme
+    assert "instructor edition" not in readme.lower() and "instructor/answers" not in readme
 
 
 def test_the_wheel_pulls_in_what_the_notebooks_import_and_no_tool(built):
@@ -171,7 +171,7 @@ def test_the_wheel_pulls_in_what_the_notebooks_import_and_no_tool(built):
         assert any(r.startswith(package) for r in requires), (package, requires)
     assert not any("nbgrader" in r or "pytest" in r for r in requires)
     assert all(n.startswith("course_lib") for n in names)
-    assert "course_lib/student.py" not in names
+    assert "instructor/build/student.py" not in names
 
 
 def test_student_tests_leave_out_what_names_answers_and_say_why(tmp_path):
@@ -209,12 +209,12 @@ def test_trivial_lines_are_skipped_with_their_reason(tmp_path):
 
 
 def test_worked_solutions_of_tools_solutions_are_read_without_running_them(tmp_path):
-    (tmp_path / "tools" / "solutions").mkdir(parents=True)
-    (tmp_path / "tools" / "solutions" / "ch09.py").write_text(
+    (tmp_path / "instructor" / "answers").mkdir(parents=True)
+    (tmp_path / "instructor" / "answers" / "ch09.py").write_text(
         'raise SystemExit("never run")\nSOLUTIONS = {"e": """\\nanswer_e = sp.sqrt(17) / 4"""}\n'
     )
     found = leak_gate.collect_needles(tmp_path)
-    assert found.lines["answer_e = sp.sqrt(17) / 4"] == "tools/solutions/ch09.py exercise e"
+    assert found.lines["answer_e = sp.sqrt(17) / 4"] == "instructor/answers/ch09.py exercise e"
 
 
 def _mkdir(root):

@@ -1,7 +1,7 @@
 """A mid-term release reaching a hub student who already edited a chapter (nbgitpuller 1.3.0).
 
-The student edition (release/student_edition.py) is the "public repository"; a student's home
-gets it with nbgitpuller's own puller (what the hub link runs), solves an exercise of problem
+The student edition (instructor/release/student_edition.py) is the "public repository"; a student's
+home gets it with nbgitpuller's own puller (what the hub link runs), solves an exercise of problem
 set 1 and re-runs it (new execution counts all through the file). Then the course releases a
 correction: a sentence in that same problem set, a sentence in chapter 02, and a change to the
 very lines the student edited. The student clicks the link again. What happens
@@ -23,10 +23,10 @@ from pathlib import Path
 import nbformat
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "release"))
+from instructor.release import student_edition
 
-import student_edition  # noqa: E402
+ROOT = Path(__file__).resolve().parents[1]
+
 
 assert importlib.util.find_spec("nbgitpuller"), "nbgitpuller is pinned in environment.txt"
 

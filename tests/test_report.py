@@ -18,22 +18,22 @@ import time
 from pathlib import Path
 
 import pytest
+import report_class as RC
 import yaml
 
-ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
-import report_class as RC  # noqa: E402
-
-from grader import answer_log, gradescope_run  # noqa: E402
-from grader.report import main, write_reports  # noqa: E402
-from grader.report_data import (  # noqa: E402
+from instructor.grading import answer_log, gradescope_run
+from instructor.grading.report import main, write_reports
+from instructor.grading.report_data import (
     apply_roster,
     from_course,
     from_gradescope,
     known,
 )
-from grader.report_html import View, csv_text, page  # noqa: E402
-from grader.report_stats import discrimination, fisher_less, set_stats  # noqa: E402
+from instructor.grading.report_html import View, csv_text, page
+from instructor.grading.report_stats import discrimination, fisher_less, set_stats
+
+ROOT = Path(__file__).resolve().parents[1]
+
 
 pytestmark = pytest.mark.filterwarnings("ignore::sqlalchemy.exc.SAWarning")
 
@@ -52,7 +52,7 @@ def planted(tmp_path_factory):
 
 def gradescope_export(course, ids, folder, names=True):
     """Gradescope's Export Submissions of the planted class: each submission's results.json
-    as ``run_autograder`` writes it (:func:`grader.gradescope_run.results_for`)."""
+    as ``run_autograder`` writes it (:func:`instructor.grading.gradescope_run.results_for`)."""
     data = {}
     for k, sid in enumerate(ids):
         results = gradescope_run.results_for(course, RC.PS, sid, time.monotonic())
@@ -258,8 +258,8 @@ def _write(path, text):
 
 def test_equal_expressions_written_otherwise_are_one_group_of_unexplained_answers():
     from course_lib.exercises import EXERCISES, xx, xy, yy
-    from grader.diagnose import group_of
-    from grader.verify import _read
+    from instructor.grading.diagnose import group_of
+    from instructor.grading.verify import _read
 
     ex = EXERCISES["lagrange_identity"]
     one = group_of(ex, _read(ex, xx * (yy + 1)))
@@ -270,7 +270,13 @@ def test_equal_expressions_written_otherwise_are_one_group_of_unexplained_answer
 
 
 @pytest.mark.parametrize(
-    "module", ["grader.diagnose", "grader.report_stats", "grader.report_html", "grader.answer_log"]
+    "module",
+    [
+        "instructor.grading.diagnose",
+        "instructor.grading.report_stats",
+        "instructor.grading.report_html",
+        "instructor.grading.answer_log",
+    ],
 )
 def test_the_examples_in_the_docstrings_run(module):
     import doctest
@@ -296,7 +302,7 @@ def test_a_submission_the_autograder_could_not_grade_is_said_not_an_exercise(tmp
 
 def test_a_failing_note_never_changes_the_grade(planted, monkeypatch, tmp_path):
     """Regression guard: the report's notes are taken after the verdict and may fail alone."""
-    import grader.preprocessor as pre
+    import instructor.grading.preprocessor as pre
 
     def broken(*args):
         raise RuntimeError("broken diagnosis")

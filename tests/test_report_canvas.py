@@ -1,6 +1,6 @@
-"""Canvas grades from Gradescope's exported scores (grader/canvas_gradescope.py) and missing
-work as 0 or blank on both paths (issue 34): the Canvas layout, a roster's ids, an unknown id,
-bad input."""
+"""Canvas grades from Gradescope's exported scores (instructor/grading/canvas_gradescope.py) and
+missing work as 0 or blank on both paths (issue 34): the Canvas layout, a roster's ids, an unknown
+id, bad input."""
 
 from __future__ import annotations
 
@@ -12,10 +12,10 @@ from pathlib import Path
 import pytest
 import yaml
 
+from instructor.grading.canvas import IDENTITY, export, main, write_csv
+from instructor.grading.canvas_gradescope import export as from_gradescope
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
-from grader.canvas import IDENTITY, export, main, write_csv  # noqa: E402
-from grader.canvas_gradescope import export as from_gradescope  # noqa: E402
 
 pytestmark = pytest.mark.filterwarnings("ignore::sqlalchemy.exc.SAWarning")
 

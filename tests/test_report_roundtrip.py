@@ -9,20 +9,19 @@ through the same preprocessors in process: tests/test_report.py.)"""
 from __future__ import annotations
 
 import copy
-import sys
 from pathlib import Path
 
 import pytest
 import yaml
+from test_grading_gradescope import autograder, notebook, run_autograder  # noqa: F401
+
+from course_lib.exercises import EXERCISES
+from instructor.grading.report_data import from_course, from_gradescope, known
+from instructor.grading.report_stats import set_stats
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT), str(ROOT / "tests")]
 # the Gradescope module's fixture and helpers (its own tests are not collected here)
-from test_grading_gradescope import autograder, notebook, run_autograder  # noqa: E402, F401
 
-from course_lib.exercises import EXERCISES  # noqa: E402
-from grader.report_data import from_course, from_gradescope, known  # noqa: E402
-from grader.report_stats import set_stats  # noqa: E402
 
 PS = "ps01"
 MISTAKE = ("answer_bac_cab = [alpha_, beta_]", "answer_bac_cab = [beta_, alpha_]")
@@ -76,7 +75,7 @@ def test_nbgrader_autograde_keeps_what_the_report_needs(tmp_path):
     from grading_helpers import TRUSTED_AUTOGRADE
     from test_grading_nbgrader import run
 
-    from grader.course import write_course
+    from instructor.grading.course import write_course
 
     write_course(tmp_path)
     code, out = run(["generate_assignment", PS, "--create"], tmp_path)

@@ -1,4 +1,4 @@
-"""Tests of course_lib.student: student copies of the notebooks.
+"""Tests of instructor.build.student: student copies of the notebooks.
 
 Synthetic notebooks (built with nbformat in tmp_path) cover each rule; the marker rule is compared
 with the real nbgrader's preprocessors; the failure modes (a hard link to a source, a directory
@@ -25,8 +25,8 @@ from hypothesis import strategies as st
 from jupyter_client.manager import start_new_kernel
 from nbformat.v4 import new_code_cell, new_markdown_cell, new_notebook, new_output, new_raw_cell
 
-from course_lib import student as student_module
-from course_lib.student import (
+from instructor.build import student as student_module
+from instructor.build.student import (
     CELL_RUN_STATE,
     CODE_STUB,
     MARKDOWN_STUB,
@@ -333,7 +333,7 @@ def assert_agrees_with_nbgrader(nb):
             without.cells[cell].source = "\n".join(lines[: line - 1] + lines[line:])
             assert nbgrader_release(without) == theirs  # ... which nbgrader just deletes
         return "refused"
-    assert theirs is not None, "nbgrader refuses a notebook that course_lib.student accepts"
+    assert theirs is not None, "nbgrader refuses a notebook that instructor.build.student accepts"
     for mine, reference in zip(ours.cells, theirs.cells, strict=True):
         assert _OUR_RAISE.sub("raise NotImplementedError()", mine.source) == reference.source
     return "same"
@@ -562,7 +562,7 @@ def assert_fails_cleanly(src, out, capsys, fragment, force=True):
     before = snapshot(out) if out.exists() else None
     assert main([str(src), str(out)] + (["--force"] if force else [])) == 2
     err = capsys.readouterr().err
-    assert err.startswith("course_lib.student: error: ") and err.count("\n") == 1, err
+    assert err.startswith("instructor.build.student: error: ") and err.count("\n") == 1, err
     assert fragment in err and "Traceback" not in err
     assert (snapshot(out) if out.exists() else None) == before
 
@@ -678,7 +678,8 @@ def test_an_interrupt_while_writing_leaves_nothing(src, tmp_path, capsys, monkey
 
 
 def test_regression_swapped_folders_never_replace_instructor_notebooks(src, tmp_path, capsys):
-    """The issue's typo: `course_lib.student build/student notebooks --force` (folders swapped)."""
+    """The issue's typo: `instructor.build.student build/student notebooks --force` (folders
+    swapped)."""
     copies = tmp_path / "copies"
     make_student_notebooks(src, copies)
     assert_fails_cleanly(copies, src, capsys, "holds solution regions")
@@ -724,7 +725,7 @@ def test_keep_outputs_keeps_the_reading_part_and_clears_from_the_first_graded_ce
 
 def run_cli(*args):
     return subprocess.run(
-        [sys.executable, "-m", "course_lib.student", *map(str, args)],
+        [sys.executable, "-m", "instructor.build.student", *map(str, args)],
         capture_output=True,
         text=True,
         timeout=120,
@@ -749,7 +750,7 @@ def test_cli_errors_exit_two_with_one_line_and_no_traceback(src, tmp_path):
         assert result.returncode == 2
         assert result.stderr.count("\n") == 1 and fragment in result.stderr
         assert "Traceback" not in result.stderr
-        assert result.stderr.startswith("course_lib.student: error: ")
+        assert result.stderr.startswith("instructor.build.student: error: ")
     assert run_cli(src, out, "--force").returncode == 0
 
 

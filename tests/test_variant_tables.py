@@ -11,23 +11,20 @@ real checker and the grader.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from course_lib.exercises import EXERCISES, check, parameters, set_student_id, variant
+from course_lib.exercises import _variants as V
+from course_lib.record import answer_record
+from instructor.build import variant_draws, variant_tables
+from instructor.build.exercise_fingerprints import run, solutions
+from instructor.grading import verify
+
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tools"))
 
-import variant_draws  # noqa: E402
-import variant_tables  # noqa: E402
-
-from course_lib.exercises import EXERCISES, check, parameters, set_student_id, variant  # noqa: E402
-from course_lib.exercises import _variants as V  # noqa: E402
-from course_lib.record import answer_record  # noqa: E402
-from grader import verify  # noqa: E402
-from tools.exercise_fingerprints import run, solutions  # noqa: E402
 
 VARIED = [ex for ex in EXERCISES.values() if ex.variants is not None]
 KEYS = sorted({ex.variants.key for ex in VARIED})
@@ -207,7 +204,7 @@ def test_another_students_answer_is_wrong_and_a_swap_gives_both_zero(variants_on
 
 
 def test_with_variants_off_everyone_gets_the_default_and_the_grader_agrees(monkeypatch):
-    off = {**V.table(), "enabled": False}  # as `tools/variant_tables.py --off` writes it
+    off = {**V.table(), "enabled": False}  # as `instructor/build/variant_tables.py --off` writes it
     monkeypatch.setattr(V, "table", lambda: off)
     monkeypatch.setattr(verify, "table", lambda: off)
     for ex in VARIED:
@@ -226,7 +223,7 @@ def test_a_strange_student_id_gets_a_valid_stable_variant(raw, variants_on):
 
 
 def test_the_instructor_sees_a_students_numbers_and_answers(variants_on):
-    import show_variant
+    from instructor.build import show_variant
 
     key = "ch04_frames"
     sid = _student_of(key, 9)
@@ -317,7 +314,9 @@ def test_the_roster_is_read_from_a_list_or_a_csv_and_an_empty_one_is_an_error(tm
     plain = tmp_path / "ids.txt"
     plain.write_text("# the class\nAda@Example.edu\n\n bob \n", encoding="utf-8")
     assert variant_tables.read_roster(plain) == ["ada@example.edu", "bob"]  # course keys
-    table = tmp_path / "roster.csv"  # the class roster of grader/identity.py: key, aliases
+    table = (
+        tmp_path / "roster.csv"
+    )  # the class roster of instructor/grading/identity.py: key, aliases
     table.write_text("key,alias\nAda@Example.edu,ada\nbob@example.edu,bob\n", encoding="utf-8")
     assert variant_tables.read_roster(table) == ["ada@example.edu", "bob@example.edu"]
     table.write_text("key,alias\nada@example.edu,x\nbob@example.edu,x\n", encoding="utf-8")

@@ -119,7 +119,7 @@ _ZOOM_RANGE = (0.5, 2.0)
 # preventing its default), and Escape leaves the view (blur). The other keys go on to ipympl,
 # and to Explorer._on_key in the kernel (arrow keys turn the view, + and − zoom). The view gets
 # role "application" and a name saying so (KEYS_HELP). Installed once a page.
-#: Output metadata key of that script's output (tools/notebooks.py does not store it).
+#: Output metadata key of that script's output (instructor/build/notebooks.py does not store it).
 SLIDER_NAMES = "course_slider_names"
 _SLIDER_NAMES_JS = """
 (function () {

@@ -10,7 +10,7 @@
 * :data:`CYCLE`: the series of a plot without explicit colours differ by line style too, not by
   colour alone (:func:`use_named` sets it as matplotlib's default property cycle).
 
-``tools/figure_audit.py`` reads every figure of the course against these rules.
+``instructor/build/figure_audit.py`` reads every figure of the course against these rules.
 """
 
 import matplotlib as mpl

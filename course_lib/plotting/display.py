@@ -6,8 +6,8 @@ screen reader then says "image" and nothing else. :func:`show` displays the figu
 sanitizer keeps, trusted or not), plus the alt text as the ``text/plain`` of the output: one copy
 of the picture, no ``image/png`` beside it. The PNG is palette-coded (as ``make notebooks``
 stores every figure) and its bytes depend only on the figure, so a re-run gives the same HTML
-and strict nbval can compare it. The website (``site/build.py``) turns such an output back into
-an ``image/png`` with the same alt text.
+and strict nbval can compare it. The website (``instructor/build/website.py``) turns such an output
+back into an ``image/png`` with the same alt text.
 """
 
 import base64
@@ -19,7 +19,7 @@ __all__ = ["show", "figure_output", "FIGURE_CLASS", "figure_alt_and_png"]
 
 #: The class of the ``<img>`` of a figure shown by :func:`show` (how the site and tests find it).
 FIGURE_CLASS = "course-figure"
-_COLOURS = 128  # the palette of every stored PNG (tools/notebooks.py: PNG_COLOURS)
+_COLOURS = 128  # the palette of every stored PNG (instructor/build/notebooks.py: PNG_COLOURS)
 _IMG = re.compile(
     rf'^<img class="{FIGURE_CLASS}" alt="([^"]*)" '
     r'src="data:image/png;base64,([A-Za-z0-9+/=]+)">$'
@@ -103,7 +103,7 @@ def show(alt, fig=None):
     ----------
     alt : str
         What the figure shows and what to see in it (the chapters use the caption under the
-        figure as plain text, ``tools/alt_text.py``: the website's alt text for it).
+        figure as plain text, ``instructor/build/alt_text.py``: the website's alt text for it).
     fig : matplotlib.figure.Figure, optional
         Default: pyplot's current figure (there must be one).
 

@@ -27,7 +27,7 @@ What is checked, and how (details in :mod:`course_lib.exercises._engine` and
 
 The expected answers are nowhere in the package, nor any value of them: the checker holds only
 salted, key-stretched (scrypt) digests of rounded values, made by the repository tool
-``tools/exercise_fingerprints.py`` from the instructor's reference solutions. Hints come from
+``python -m instructor.build.exercise_fingerprints`` from the instructor's reference solutions. Hints come from
 transformations of the student's own answer (its negative, its transpose, a known mistake
 undone ...) compared with those digests.
 
@@ -359,7 +359,7 @@ def check(name, answer):
             "malformed",
             (
                 "this exercise has no stored fingerprint; the instructor "
-                "regenerates them with tools/exercise_fingerprints.py."
+                "regenerates them with python -m instructor.build.exercise_fingerprints."
             ),
         )
     except Exception as err:  # noqa: BLE001 - a bad answer must never raise from deep inside

@@ -4,7 +4,7 @@ The course's **key** of a student is their institutional e-mail address (or logi
 instructor says so), *normalised*: NFKC unicode, case folded, white space collapsed and
 stripped, so that ``"Alice@Berkeley.edu "`` and ``"alice@berkeley.edu"`` are one key. When
 the course sets an e-mail domain (:data:`SETTINGS_FILE`, ``"email_domain"``; the instructor's
-``python -m grader.identity --domain berkeley.edu``), a bare login becomes
+``python -m instructor.grading.identity --domain berkeley.edu``), a bare login becomes
 ``login@domain``: the JupyterHub user ``alice`` and the e-mail ``alice@berkeley.edu`` are
 then one student. The exercises' numbers are drawn from the key.
 

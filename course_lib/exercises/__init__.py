@@ -27,9 +27,9 @@ What is checked, and how (details in :mod:`course_lib.exercises._engine` and
 
 The expected answers are nowhere in the package, nor any value of them: the checker holds only
 salted, key-stretched (scrypt) digests of rounded values, made by the repository tool
-``python -m instructor.build.exercise_fingerprints`` from the instructor's reference solutions. Hints come from
-transformations of the student's own answer (its negative, its transpose, a known mistake
-undone ...) compared with those digests.
+``python -m instructor.build.exercise_fingerprints`` from the instructor's reference
+solutions. Hints come from transformations of the student's own answer (its negative, its
+transpose, a known mistake undone ...) compared with those digests.
 
 The symbols of the exercises are those of :mod:`course_lib.symbolic`, re-exported here.
 

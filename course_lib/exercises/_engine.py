@@ -1,8 +1,8 @@
 r"""The checking engine: sample points, evaluation, and the features that are digested.
 
 Nothing here knows an expected answer. The checker compares a student's answer with
-*fingerprints* that the repository tool ``python -m instructor.build.exercise_fingerprints`` makes from the
-instructor's reference solutions: key-stretched digests of rounded values
+*fingerprints* that the repository tool ``python -m instructor.build.exercise_fingerprints``
+makes from the instructor's reference solutions: key-stretched digests of rounded values
 (:mod:`course_lib.exercises._digests`), never the values themselves.
 
 **Sample points** (:func:`points`). A symbolic answer is evaluated at seeded points over the

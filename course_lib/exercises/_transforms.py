@@ -5,8 +5,8 @@ fingerprint of a mistake names a transformation from the small, generic library 
 a transpose, rows for columns, a factor 2 or 1/2, degrees for radians, a cosine, a full turn,
 ...) that turns the mistaken answer into the right one. The checker applies it to the
 *student's* answer and compares the result with the digests of the right answer: a match means
-the student made that mistake. The tool ``python -m instructor.build.exercise_fingerprints`` finds, for every
-mistake of the bank, the transformation that does this (it holds both answers).
+the student made that mistake. The tool ``python -m instructor.build.exercise_fingerprints``
+finds, for every mistake of the bank, the transformation that does this (it holds both answers).
 
 A transformation names only what the hint already says in words; none of them holds a value of
 an answer.

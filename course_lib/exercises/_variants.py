@@ -73,8 +73,8 @@ def variant_index(key, count, student=None, spread=None):
     gives) or None for this kernel's :func:`student_id`. An empty id, :data:`EXAMPLE_ID`, or
     ``count`` 1, gives 0, the default variant. Stable across Python and numpy versions (SHA-256
     of the salted key and the variant key). ``spread``: the key's displacements of the tables
-    (``python -m instructor.build.variant_tables --roster`` chooses them so that no two students of a known class
-    share a row; None: the plain hash).
+    (``python -m instructor.build.variant_tables --roster`` chooses them so that no two
+    students of a known class share a row; None: the plain hash).
 
     Raises
     ------
@@ -109,7 +109,8 @@ def _row(sid, key, count, spread=None):
 # --------------------------------------------------------------------------- the variant tables
 
 #: The vetted variants of every variant key, package data of :mod:`course_lib.exercise_bank`,
-#: written by ``python -m instructor.build.variant_tables``: ``{"enabled": bool, "keys": {key: [parameters, ...]}}``
+#: written by ``python -m instructor.build.variant_tables``:
+#: ``{"enabled": bool, "keys": {key: [parameters, ...]}}``
 #: with row 0 of each key the exercise's default, and ``"spread": {key: [displacement, ...]}``
 #: when the instructor spread a class over the rows (``variant_tables.py --roster``).
 #: Parameters only: no answer, no value of one.

@@ -16,8 +16,9 @@ reparented); elsewhere its process tree is sampled every 20 ms (a lower bound: a
 last 20 ms are missed). Printed: per problem set, the CPU and wall time per submission; then
 where the CPU goes (nbgrader's start-up per process, nbgrader's work per submission, the
 kernel's start, its cells, its stop), from two probes (an nbgrader process that grades no one;
-confined kernels started and stopped as :class:`instructor.grading.preprocessor.ConfinedExecute` does);
-then the projection for 200 students x 5 problem sets on 2 cores.
+confined kernels started and stopped as
+:class:`instructor.grading.preprocessor.ConfinedExecute` does); then the projection for 200
+students x 5 problem sets on 2 cores.
 
     python -m benchmarks.bench_grade [--students 20] [--jobs 2] [--per-student]
         [--shutdown immediate|graceful] [--keep DIR]

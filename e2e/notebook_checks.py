@@ -22,8 +22,11 @@ MAX_SCREENSHOT_HEIGHT = 16000  # Chromium's texture limit is a little above this
 NO_START_SECONDS = 40
 # How long one cell scrolled into view may take to typeset and load its images.
 CELL_SETTLE_SECONDS = 20
-# Cells queued while the kernel says idle this long: the queued cells will never run.
+# Cells queued while the kernel says idle this long: the queued cells will never run. Before
+# the first cell has run, 10 s (a kernel that sat idle with every cell queued, "no kernel" on
+# the server, cost 30 s before its retry in CI; an idle kernel is not running a cell).
 IDLE_STALL = 30
+IDLE_STALL_NONE_RAN = 10
 MATH_MARKERS = ("$", "\\(", "\\[", "\\begin{")
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 
@@ -89,9 +92,11 @@ def wait_for_run(page, timeout):
         ran = sum(c["count"] is not None for c in code)
         if ran != progress["ran"] or state["kernel"] != "idle":
             progress.update(ran=ran, since=time.monotonic())
-        elif not (finished or errored) and time.monotonic() - progress["since"] > IDLE_STALL:
+        elif not (finished or errored) and time.monotonic() - progress["since"] > (
+            stall := IDLE_STALL if ran else IDLE_STALL_NONE_RAN
+        ):
             raise KernelStalled(
-                f"the kernel is idle and no cell has run for {IDLE_STALL} s, yet "
+                f"the kernel is idle and no cell has run for {stall} s, yet "
                 f"{len(code) - ran} cell(s) are still queued"
             )
         if (finished or errored) and not busy:

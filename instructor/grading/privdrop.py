@@ -336,12 +336,16 @@ def _pids(uid):
     return out
 
 
-def kill_all(uid, tries=50):
+def kill_all(uid, seconds=10.0):
     """Kill every process of ``uid``: ``kill(-1, SIGKILL)`` sent by a child that is that uid
-    (it reaches every process of the uid at once, a fork bomb's too), until none is left."""
-    for _ in range(tries):
-        if not _pids(uid):
-            return True
+    (it reaches every process of the uid at once, a fork bomb's too), again until none is left
+    or ``seconds`` have passed (a killed process can take a while to exit on a loaded machine:
+    half a second was not always enough). Whether none is left."""
+    deadline = time.monotonic() + seconds
+    pause = 0.01
+    while _pids(uid):
+        if time.monotonic() > deadline:
+            return False
         pid = os.fork()
         if pid == 0:
             try:
@@ -352,8 +356,9 @@ def kill_all(uid, tries=50):
             finally:
                 os._exit(0)
         os.waitpid(pid, 0)
-        time.sleep(0.01)
-    return not _pids(uid)
+        time.sleep(pause)
+        pause = min(2 * pause, 0.2)
+    return True
 
 
 def make_home(uid):
@@ -368,8 +373,15 @@ def make_home(uid):
 
 def clean(uid, home, lock_fd):
     """After the kernel: its processes killed, its home and its files in :data:`SHARED_TMP`
-    removed, its slot freed."""
-    kill_all(uid)
+    removed, its slot freed. A uid with a process left is not freed: the slot stays taken (for
+    as long as this process lives) rather than hand the next student's kernel a uid that a
+    process of the last one still runs as."""
+    if not kill_all(uid):
+        print(
+            f"privdrop: processes of uid {uid} outlived SIGKILL for 10 s; its slot is not reused",
+            file=sys.stderr,
+        )
+        lock_fd = None
     shutil.rmtree(home, ignore_errors=True)
     for shared in SHARED_TMP:
         try:
@@ -386,7 +398,8 @@ def clean(uid, home, lock_fd):
                     os.unlink(entry.path)
             except OSError:
                 pass
-    os.close(lock_fd)
+    if lock_fd is not None:
+        os.close(lock_fd)
 
 
 def drop(uid):

@@ -20,6 +20,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -255,6 +256,18 @@ print(json.dumps({"top": top, "first": first, "second": second, "refused": refus
 """
 
 
+def test_a_check_that_gives_no_answer_refuses_instead_of_passing_regression_killed_probe():
+    """Before, a check child that died (a student's kernel of the same uid can kill it) or
+    whose task raised read as "nothing found": the hidden folders passed unchecked. Checks now
+    run as PROBE_ID, a uid no kernel has, and no answer is an error, a refusal upstream."""
+    assert privdrop.PROBE_ID not in range(privdrop.KERNEL_ID, privdrop.KERNEL_ID + privdrop.SLOTS)
+    with pytest.raises(OSError, match="did not finish"):
+        privdrop._as_uid(privdrop.PROBE_ID, lambda: os.kill(os.getpid(), signal.SIGKILL))
+    with pytest.raises(OSError, match="did not finish"):
+        privdrop._as_uid(privdrop.PROBE_ID, lambda: 1 / 0)
+    assert privdrop._as_uid(privdrop.PROBE_ID, os.getuid) == privdrop.PROBE_ID
+
+
 def test_a_hidden_folder_readable_by_the_kernels_uid_is_refused_with_the_chmod():
     done = under_docker([sys.executable, "-c", READABLE])
     assert done.returncode == 0, done.stderr
@@ -371,8 +384,31 @@ def _digest(*folders):
     return h.hexdigest()
 
 
-def _kernel_uids_idle():
-    return all(not privdrop._pids(privdrop.KERNEL_ID + n) for n in range(privdrop.SLOTS))
+def _kernel_uids_busy():
+    """Every live process of the uid of a FREE slot, with its command line (empty: none). A
+    slot whose lock someone holds is in use (another test's kernel may run in it right now:
+    counting those failed this test now and then); a free slot must have no process left."""
+    import fcntl
+
+    folder = next(d for d in privdrop.LOCK_DIRS if os.path.isdir(d))
+    out = []
+    for n in range(privdrop.SLOTS):
+        fd = os.open(os.path.join(folder, f"slot-{n}.lock"), os.O_RDWR | os.O_CREAT, 0o600)
+        try:
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                continue  # in use
+            for pid in privdrop._pids(privdrop.KERNEL_ID + n):
+                try:
+                    with open(f"/proc/{pid}/cmdline", "rb") as f:
+                        cmd = f.read().replace(b"\0", b" ").decode(errors="replace")[:200]
+                except OSError:
+                    cmd = "(gone)"
+                out.append((privdrop.KERNEL_ID + n, pid, cmd))
+        finally:
+            os.close(fd)
+    return out
 
 
 def _attacks(solved, blank, places, writes):
@@ -447,7 +483,7 @@ def test_nbgrader_autograde_of_a_class_under_dockers_constraint(tmp_path):
     assert (
         _digest(course / "source", ROOT / "instructor" / "grading", ROOT / "instructor") == before
     )
-    assert _kernel_uids_idle()
+    assert not _kernel_uids_busy(), _kernel_uids_busy()
 
 
 @pytest.mark.gradescope
@@ -505,4 +541,4 @@ def test_run_autograder_in_its_own_layout_under_dockers_constraint(tmp_path):
     contained = _outputs(top / "course" / "autograded" / folder["p_contained"] / PS / name)
     assert "fork refused after" in contained and "memory refused" in contained
     assert _digest(top / "source") == before
-    assert _kernel_uids_idle()
+    assert not _kernel_uids_busy(), _kernel_uids_busy()

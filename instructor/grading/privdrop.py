@@ -20,7 +20,8 @@ What it may read is decided by permissions, checked empirically before any submi
 - it must reach the Python installation, the environment and a read-only copy of the
   installed ``course_lib`` (:func:`lib_copy`; the copy, so that an editable install inside the
   instructor's repository needs no change of modes): :func:`problem` opens, in a child that
-  has dropped to the kernel's uid, the Python, its standard library and the packages the
+  has dropped to :data:`PROBE_ID` (an "other" like the kernel's uid, never a kernel's), the
+  Python, its standard library and the packages the
   kernel needs;
   where a folder on the way is closed to others (a Python under ``/root``, mode 0700), it
   refuses and names the folder and the ``chmod`` that opens it;
@@ -29,7 +30,7 @@ What it may read is decided by permissions, checked empirically before any submi
   Gradescope's ``source/`` with ``instructor/answers``, the instructor's notebooks and the
   grader's code): :func:`hidden_problem` walks them as root, keeps every path whose modes let
   "others" through (the kernel is neither owner nor in any group), adds the first entries of
-  each folder whatever their modes, and a child process that has dropped to the kernel's uid
+  each folder whatever their modes, and a child process that has dropped to :data:`PROBE_ID`
   tries to list, open, open for writing and create in each of them. One success and the
   grader refuses, naming the path and the ``chmod`` that closes it.
 """
@@ -54,6 +55,7 @@ from pathlib import Path
 
 __all__ = [
     "KERNEL_ID",
+    "PROBE_ID",
     "SLOTS",
     "problem",
     "hidden_problem",
@@ -70,6 +72,12 @@ __all__ = [
 #: maps 0-65535 only). An account or group with one of these numbers makes privdrop refuse.
 KERNEL_ID = 60500
 SLOTS = 16
+#: The uid of the checks made before grading (can that uid start Python, reach a hidden
+#: folder?): the first number after the slots, never a kernel's, so a check run by one grader
+#: never shares a uid with a student's kernel of another (nor is killed by its clean-up).
+#: Every check is about what *others* may do: any uid without an account or a group answers
+#: it alike.
+PROBE_ID = KERNEL_ID + SLOTS
 #: World-writable folders where the kernel's uid may leave files: emptied of them after it.
 SHARED_TMP = ("/tmp", "/var/tmp", "/dev/shm", "/run/lock")
 #: Where the slot locks live (root only); the first that can be made.
@@ -95,13 +103,13 @@ def _closed_ancestor(path):
 
 
 def _accounts():
-    for n in range(SLOTS):
+    for uid in range(KERNEL_ID, PROBE_ID + 1):
         for lookup, what in ((pwd.getpwuid, "user"), (grp.getgrgid, "group")):
             try:
-                name = lookup(KERNEL_ID + n)
+                name = lookup(uid)
             except KeyError:
                 continue
-            return f"the {what} {name[0]!r} has id {KERNEL_ID + n}, which the kernel would use"
+            return f"the {what} {name[0]!r} has id {uid}, which the kernel would use"
     return None
 
 
@@ -147,18 +155,18 @@ def problem(python=sys.executable):
         closed = _closed_ancestor(place)
         if closed is not None:
             return (
-                f"the kernel's user (uid {KERNEL_ID}) cannot reach {place}: {closed} is closed "
+                f"the kernel's user (uid {PROBE_ID}) cannot reach {place}: {closed} is closed "
                 f"to other users (mode {os.stat(closed).st_mode & 0o777:o}); run "
                 f"`chmod o+x {closed}` (it lets others pass, not list), or install Python "
                 "and the environment outside it"
             )
     files = _needed(python)
     try:
-        bad = _as_uid(KERNEL_ID, lambda: _opens(python, files))
+        bad = _as_uid(PROBE_ID, lambda: _opens(python, files))
     except OSError as err:
-        return f"setuid to {KERNEL_ID} failed here: {err}"
+        return f"setuid to {PROBE_ID} failed here: {err}"
     if bad:
-        return f"as uid {KERNEL_ID}, the kernel's Python cannot be read: {'; '.join(bad[:3])}"
+        return f"as uid {PROBE_ID}, the kernel's Python cannot be read: {'; '.join(bad[:3])}"
     return None
 
 
@@ -198,7 +206,8 @@ def _candidates(top, expose, limit=PROBE_LIMIT):
 
 def _as_uid(uid, task):
     """``task()`` (JSON-able) run in a forked child that has dropped to ``uid``; its result.
-    OSError when the child could not become ``uid``."""
+    OSError when the child could not become ``uid``, or did not finish (killed, or the task
+    raised): a child that gives no answer never counts as "nothing found"."""
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:  # the child: system calls only, then _exit
@@ -208,8 +217,9 @@ def _as_uid(uid, task):
             os.setgroups([])
             os.setresgid(uid, uid, uid)
             os.setresuid(uid, uid, uid)
-            code = 0
+            code = 4
             os.write(write, json.dumps(task()).encode())
+            code = 0
         finally:
             os._exit(code)
     os.close(write)
@@ -218,9 +228,12 @@ def _as_uid(uid, task):
         chunks.append(chunk)
     os.close(read)
     _, status = os.waitpid(pid, 0)
-    if os.waitstatus_to_exitcode(status) == 3:
+    code = os.waitstatus_to_exitcode(status)
+    if code == 3:
         raise OSError(errno.EPERM, f"the child could not become uid {uid}")
-    return json.loads(b"".join(chunks) or b"null")
+    if code != 0:  # killed (a signal) or failed: its silence is no answer, never "nothing found"
+        raise OSError(errno.ECHILD, f"the check as uid {uid} did not finish (status {code})")
+    return json.loads(b"".join(chunks))
 
 
 def _try_as(uid, paths):
@@ -258,7 +271,7 @@ def _attempts(path):
 
 
 @cache
-def hidden_problem(hide, expose, uid=KERNEL_ID):
+def hidden_problem(hide, expose, uid=PROBE_ID):
     """Why the kernel's uid could read or write something in the folders ``hide`` (a tuple),
     or None: tried by a child process that has dropped to ``uid`` (see the module's text).
     Folders in ``expose`` (the Python, the environment) are left out of the walk."""
@@ -267,7 +280,10 @@ def hidden_problem(hide, expose, uid=KERNEL_ID):
     for top in hide:
         if os.path.lexists(top):
             paths += _candidates(os.path.realpath(top), expose)
-    found = _try_as(uid, paths)
+    try:
+        found = _try_as(uid, paths)
+    except OSError as err:  # no answer is a refusal, never a pass
+        return f"the hidden folders could not be checked as uid {uid}: {err}"
     if not found:
         return None
     lines = []

@@ -77,25 +77,32 @@ def run_autograder(top, student, nb=None, raw=None, name=None, meta=None):
     results = top / "results" / "results.json"
     if results.exists():
         results.unlink()
-    env = {
-        **os.environ,
-        "ROTATIONS_AUTOGRADER_ROOT": str(top),
-        "ROTATIONS_PYTHON": sys.executable,
-        "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT),
-    }
     start = time.monotonic()
-    done = subprocess.run(
-        ["bash", str(top / "source" / "run_autograder")],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=LIMIT,
-    )
+    done = _launch(top)
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-3000:]
     assert time.monotonic() - start < LIMIT
     out = json.loads(results.read_text())
     _valid(out)
     return out
+
+
+def _launch(top, env=None):
+    """Gradescope's ``run_autograder`` of the layout at ``top`` (the tests' root, this Python,
+    the short cell timeout; ``env`` added): the finished process."""
+    full = {
+        **os.environ,
+        "ROTATIONS_AUTOGRADER_ROOT": str(top),
+        "ROTATIONS_PYTHON": sys.executable,
+        "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT),
+        **(env or {}),
+    }
+    return subprocess.run(
+        ["/bin/bash", str(top / "source" / "run_autograder")],
+        env=full,
+        capture_output=True,
+        text=True,
+        timeout=LIMIT,
+    )
 
 
 def _valid(results):
@@ -391,20 +398,7 @@ def run_raw(top, student, fill, env=None):
     meta = {"users": [{"sid": student, "id": 1}]}
     (top / "submission_metadata.json").write_text(json.dumps(meta))
     results = top / "results" / "results.json"
-    full = {
-        **os.environ,
-        "ROTATIONS_AUTOGRADER_ROOT": str(top),
-        "ROTATIONS_PYTHON": sys.executable,
-        "ROTATIONS_CELL_TIMEOUT": str(CELL_TIMEOUT),
-        **(env or {}),
-    }
-    done = subprocess.run(
-        ["/bin/bash", str(top / "source" / "run_autograder")],
-        env=full,
-        capture_output=True,
-        text=True,
-        timeout=LIMIT,
-    )
+    done = _launch(top, env)
     out = json.loads(results.read_text()) if results.is_file() else None
     if out is not None:
         _valid(out)

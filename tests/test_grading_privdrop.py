@@ -390,10 +390,9 @@ def _kernel_uids_busy():
     counting those failed this test now and then); a free slot must have no process left."""
     import fcntl
 
-    folder = next(d for d in privdrop.LOCK_DIRS if os.path.isdir(d))
     out = []
     for n in range(privdrop.SLOTS):
-        fd = os.open(os.path.join(folder, f"slot-{n}.lock"), os.O_RDWR | os.O_CREAT, 0o600)
+        fd = os.open(privdrop.slot_lock(n), os.O_RDWR | os.O_CREAT, 0o600)
         try:
             try:
                 fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)

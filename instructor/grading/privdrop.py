@@ -60,6 +60,7 @@ __all__ = [
     "problem",
     "hidden_problem",
     "lib_copy",
+    "slot_lock",
     "acquire_slot",
     "kill_all",
     "make_home",
@@ -313,9 +314,9 @@ def lib_copy(lib):
     return top
 
 
-def acquire_slot():
-    """A free slot: ``(uid, lock file descriptor)``; the lock is held until the descriptor is
-    closed (:func:`clean`). Leftover processes of that uid are killed first."""
+def slot_lock(n):
+    """The lock file of slot ``n``, in the first folder of :data:`LOCK_DIRS` that can be made
+    (root only, 0700)."""
     for folder in LOCK_DIRS:
         try:
             os.makedirs(folder, mode=0o700, exist_ok=True)
@@ -323,8 +324,14 @@ def acquire_slot():
             break
         except OSError:
             continue
+    return os.path.join(folder, f"slot-{n}.lock")
+
+
+def acquire_slot():
+    """A free slot: ``(uid, lock file descriptor)``; the lock is held until the descriptor is
+    closed (:func:`clean`). Leftover processes of that uid are killed first."""
     for n in range(SLOTS):
-        fd = os.open(os.path.join(folder, f"slot-{n}.lock"), os.O_RDWR | os.O_CREAT, 0o600)
+        fd = os.open(slot_lock(n), os.O_RDWR | os.O_CREAT, 0o600)
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:

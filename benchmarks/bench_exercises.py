@@ -38,7 +38,7 @@ import sympy as sp
 from benchmarks._timing import best_times
 from course_lib import exercises
 from course_lib.exercises import Choice, Value, _digests, _engine, alpha, check
-from instructor.build import exercise_fingerprints as F
+from instructor import answers as instructor_answers
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -100,8 +100,8 @@ def timings(fn):
 
 def answers(ex):
     """(right, wrong, hostile) answers of one exercise."""
-    sols, mistakes = F.solutions(ex.chapter)
-    ns = F.run(ex, sols[ex.name])
+    mistakes = instructor_answers.mistakes(ex.chapter)
+    ns = instructor_answers.worked(ex.name)
     right = ns[ex.answer_variable]
     ms = mistakes.get(ex.name, {})
     spec = ex.answer
@@ -253,8 +253,8 @@ def variant_costs():
             continue
         sid = _last_row_student(ex)
         set_student_id(sid)
-        sols, mistakes = F.solutions(ex.chapter)
-        ns = F.run(ex, sols[name], parameters(name))
+        mistakes = instructor_answers.mistakes(ex.chapter)
+        ns = instructor_answers.worked(name, parameters(name))
         right = ns[ex.answer_variable]
         wrong = eval(next(iter(mistakes[name].values())), ns) if mistakes.get(name) else -right
         record = answer_record(name, right)

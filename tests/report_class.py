@@ -30,11 +30,9 @@ import nbformat
 import numpy as np
 import sympy as sp
 
-from course_lib import exercise_bank
-from course_lib.exercises import EXERCISES, Choice, Value, set_student_id
-from course_lib.exercises._variants import variant_of
+from course_lib.exercises import EXERCISES, Choice, Value, set_student_id, variant_of
 from course_lib.record import MIME, answer_record
-from instructor.build.exercise_fingerprints import solutions
+from instructor import answers
 from instructor.grading.answer_log import NoteChecksRun
 from instructor.grading.preprocessor import VerifyRecords
 
@@ -112,13 +110,7 @@ def checked(i):
 
 def _namespace(name, kid):
     ex = EXERCISES[name]
-    sols, _ = solutions(ex.chapter)
-    ns = {}
-    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
-    if ex.variants is not None:
-        ns["P"] = variant_of(ex.variants, kid)[1]
-    exec(sols[name], ns)
-    return ns
+    return answers.worked(name, variant_of(ex.variants, kid)[1] if ex.variants else None)
 
 
 def _other_letters(ex, right, mistakes):
@@ -148,7 +140,7 @@ def answer(name, role, kid):
     ex = EXERCISES[name]
     ns = _namespace(name, kid)
     right = ns[ex.answer_variable]
-    _, mistakes = solutions(ex.chapter)
+    mistakes = answers.mistakes(ex.chapter)
     wrong = [eval(e, ns) for e in mistakes.get(name, {}).values()]
     if role == "right":
         return right

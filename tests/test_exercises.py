@@ -49,6 +49,7 @@ from course_lib.exercises import (
     y,
     yy,
 )
+from instructor.answers import worked
 from instructor.build import exercise_fingerprints as F
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -60,10 +61,8 @@ MARKERS = ("BEGIN SOLUTION", "END SOLUTION", "BEGIN HIDDEN TESTS", "END HIDDEN T
 
 def reference(name):
     """(namespace, answer) of the instructor's reference solution."""
-    ex = get(name)
-    sols, _ = F.solutions(ex.chapter)
-    ns = F.run(ex, sols[name])
-    return ns, ns[ex.answer_variable]
+    ns = worked(name)
+    return ns, ns[get(name).answer_variable]
 
 
 def mistakes():

@@ -12,11 +12,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from course_lib import exercise_bank
-from course_lib.exercises import EXERCISES, alpha, check
+from course_lib.exercises import EXERCISES, CheckResult, alpha, check, compare
 from course_lib.exercises import _engine as E
 from course_lib.record import MIME, CheckFailed, answer_record
-from instructor.build.exercise_fingerprints import solutions
+from instructor import answers
 from instructor.grading import records, sandbox, verify
 from instructor.grading.records import Unreadable, parse
 
@@ -26,14 +25,7 @@ NAMES = list(EXERCISES)
 
 
 def _namespace(name):
-    ex = EXERCISES[name]
-    sols, _ = solutions(ex.chapter)
-    ns = {}
-    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
-    if ex.variants is not None:  # the answer cell's P = parameters(name): the default numbers
-        ns["P"] = ex.variants.default
-    exec(sols[name], ns)
-    return ns
+    return answers.worked(name)  # with variants: the answer cell's P, the default numbers
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -41,8 +33,7 @@ def test_the_reference_solution_is_correct_and_every_known_mistake_is_not(name):
     ns = _namespace(name)
     ex = EXERCISES[name]
     assert verify.verdict(name, answer_record(name, ns[ex.answer_variable])).ok
-    _, mistakes = solutions(ex.chapter)
-    for mid, expr in mistakes.get(name, {}).items():
+    for mid, expr in answers.mistakes(ex.chapter).get(name, {}).items():
         got = verify.verdict(name, answer_record(name, eval(expr, ns)))
         assert not got.ok, (mid, got)
 
@@ -70,17 +61,41 @@ def test_an_answer_fitted_to_the_checkers_seeded_points_is_wrong_at_fresh_points
     ]
     fitted = sp.Add(*terms)
     got = verify.verdict(name, answer_record(name, fitted))
-    assert got.status == "wrong" and "fresh random points" in got.note
+    assert got.status == "wrong" and "fresh random points" in got.message
 
 
 def test_fresh_points_are_new_on_every_draw_and_not_the_checkers():
     spec = EXERCISES["hat_fifth"].answer
     rng = np.random.default_rng()
-    one, two = verify.fresh_points(spec, rng), verify.fresh_points(spec, rng)
+    one, two = compare.fresh_points(spec, rng), compare.fresh_points(spec, rng)
     seeded, _ = E.points("hat_fifth", spec)
     assert set(one) == set(seeded)
     for s in one:
         assert not np.isin(one[s], two[s]).any() and not np.isin(one[s], seeded[s]).any()
+
+
+def test_fresh_points_come_from_the_domain_of_the_checkers_seeded_points():
+    """One sample domain for the checker and the grader (the grader kept a copy of its own)."""
+    spec = EXERCISES["composed_angle"].answer
+    fresh = compare.fresh_points(spec, np.random.default_rng(1), 400)
+    seeded, near = E.points("composed_angle", spec)
+    for s in fresh:
+        far = seeded[s][~near]
+        assert far.min() - 1 < fresh[s].min() and fresh[s].max() < far.max() + 1, s
+        assert np.abs(fresh[s]).max() <= 4 * np.pi
+    spec = EXERCISES["half_turn"].answer  # ω a unit vector
+    fresh = compare.fresh_points(spec, np.random.default_rng(2), 50)
+    w = np.stack([fresh[s] for s in E.base_symbols(spec) if s.name.startswith("omega")], -1)
+    assert np.allclose(np.linalg.norm(w, axis=-1), 1)
+
+
+def test_the_graders_verdict_is_the_checkers_result_type():
+    ex = EXERCISES["hat_fifth"]
+    right = verify.verdict(ex.name, answer_record(ex.name, _namespace(ex.name)["answer_hat_fifth"]))
+    forged = verify.verdict(ex.name, {"version": 1, "exercise": "other"})
+    assert type(right) is type(forged) is CheckResult
+    assert right.ok and right.status == "correct" and str(right).startswith("✓")
+    assert not forged.ok and forged.status == "forged" and "another exercise" in forged.message
 
 
 @pytest.mark.parametrize(
@@ -161,7 +176,7 @@ def test_parse_reads_back_what_srepr_writes():
 )
 def test_a_record_that_is_missing_forged_or_of_another_exercise_is_not_correct(data, status):
     got = verify.verdict("hat_fifth", data)
-    assert got.status == status and not got.ok and "\n" not in got.note
+    assert got.status == status and not got.ok and "\n" not in got.message
 
 
 def test_the_asked_form_is_checked_by_the_grader_too():
@@ -169,7 +184,7 @@ def test_the_asked_form_is_checked_by_the_grader_too():
 
     right_value_wrong_form = W**5  # hat_fifth asks for degree at most 2 in W
     got = verify.verdict("hat_fifth", answer_record("hat_fifth", right_value_wrong_form))
-    assert got.status == "form" and "reduce the higher powers" in got.note
+    assert got.status == "form" and "reduce the higher powers" in got.message
     assert check("hat_fifth", right_value_wrong_form).status == "form"
 
 

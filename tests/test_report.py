@@ -258,8 +258,8 @@ def _write(path, text):
 
 def test_equal_expressions_written_otherwise_are_one_group_of_unexplained_answers():
     from course_lib.exercises import EXERCISES, xx, xy, yy
+    from course_lib.exercises.compare import read as _read
     from instructor.grading.diagnose import group_of
-    from instructor.grading.verify import _read
 
     ex = EXERCISES["lagrange_identity"]
     one = group_of(ex, _read(ex, xx * (yy + 1)))
@@ -315,3 +315,17 @@ def test_a_failing_note_never_changes_the_grade(planted, monkeypatch, tmp_path):
     assert after == before == {n: float(RC.EXERCISES[n].points) for n in RC.NAMES}
     log = answer_log.read(tmp_path, RC.PS)[ids[right[0]]]
     assert log == {}  # the notes are missing, said by the report; the grade is whole
+
+
+def test_a_wrong_verdict_is_logged_as_wrong_regression_falsy_verdict():
+    """The grader's verdict is a CheckResult, false when not correct: the log once read a
+    wrong answer's verdict as no verdict at all ("zero")."""
+    from course_lib.exercises import EXERCISES, xx, yy
+    from course_lib.record import answer_record
+    from instructor.grading.diagnose import entry
+    from instructor.grading.verify import verdict
+
+    ex = EXERCISES["lagrange_identity"]
+    data = answer_record(ex.name, xx * yy + 7)
+    logged = entry(ex.name, data, None, verdict(ex.name, data), checked=True)
+    assert logged["verdict"] == "wrong" and logged["group"]

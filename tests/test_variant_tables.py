@@ -16,11 +16,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from course_lib import exercise_bank
 from course_lib.exercises import EXERCISES, check, parameters, set_student_id, variant
 from course_lib.exercises import _variants as V
 from course_lib.record import answer_record
+from instructor import answers
 from instructor.build import variant_draws, variant_tables
-from instructor.build.exercise_fingerprints import run, solutions
 from instructor.grading import verify
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -54,7 +55,6 @@ def variants_on(monkeypatch):
     """The course's own tables with variants turned on (as ``variant_tables.py --on``)."""
     on = {**V.table(), "enabled": True}
     monkeypatch.setattr(V, "table", lambda: on)
-    monkeypatch.setattr(verify, "table", lambda: on)
     verify.expected.cache_clear()
     yield on
     verify.expected.cache_clear()
@@ -95,9 +95,10 @@ def _answers(ex, params):
 
 
 def _run_answers(ex, params):
-    sols, mistakes = solutions(ex.chapter)
-    ns = run(ex, sols[ex.name], params)
-    wrong = {mid: eval(expr, ns) for mid, expr in mistakes.get(ex.name, {}).items()}
+    ns = answers.worked(ex.name, params)
+    wrong = {
+        mid: eval(expr, ns) for mid, expr in answers.mistakes(ex.chapter).get(ex.name, {}).items()
+    }
     return ns[ex.answer_variable], wrong
 
 
@@ -200,13 +201,12 @@ def test_another_students_answer_is_wrong_and_a_swap_gives_both_zero(variants_on
             own = verify.verdict(ex.name, answer_record(ex.name, mine[student]), student)
             swapped = verify.verdict(ex.name, answer_record(ex.name, mine[other]), student)
             assert own.ok, own
-            assert swapped.status == "wrong" and "this student's numbers" in swapped.note
+            assert swapped.status == "wrong" and "this student's numbers" in swapped.message
 
 
 def test_with_variants_off_everyone_gets_the_default_and_the_grader_agrees(monkeypatch):
     off = {**V.table(), "enabled": False}  # as `instructor/build/variant_tables.py --off` writes it
     monkeypatch.setattr(V, "table", lambda: off)
-    monkeypatch.setattr(verify, "table", lambda: off)
     for ex in VARIED:
         sid = _student_of(ex.variants.key, 7)  # variant 7 with variants on
         assert parameters(ex.name, student=sid) == ex.variants.default
@@ -243,7 +243,7 @@ def test_the_grader_notes_when_the_notebook_showed_other_numbers(variants_on):
     sid = _student_of(ex.variants.key, 4)
     default = _answers(ex, ex.variants.default)[0]
     got = verify.verdict(ex.name, answer_record(ex.name, default), sid)  # kernel: no id
-    assert got.status == "wrong" and "no student id was set" in got.note
+    assert got.status == "wrong" and "no student id was set" in got.message
     forged = {**answer_record(ex.name, default), "variant": 4}  # the record's claim: no points
     assert verify.verdict(ex.name, forged, sid).status == "wrong"
 
@@ -372,3 +372,37 @@ def test_every_row_has_its_fingerprints_packed():
         count = len(V.table()["keys"][ex.variants.key])
         assert V.variant_name(ex.name, count - 1) in stored
         assert V.variant_name(ex.name, count) not in stored
+
+
+def _draws_values(ex, params, monkeypatch):
+    """The values (answer and mistakes) the draw's ``problems`` computes in numpy for ``ex``."""
+    seen = {}
+
+    def spy(exercise, values, gap=0.01):
+        seen[exercise] = values
+        return []
+
+    for chapter in exercise_bank.CHAPTERS:
+        module = answers.load(chapter)
+        if hasattr(module, "apart"):
+            monkeypatch.setattr(module, "apart", spy)
+    variant_draws.problems(ex.variants.key, params)
+    return seen.get(ex.name)
+
+
+@pytest.mark.parametrize("ex", VARIED, ids=lambda ex: ex.name)
+def test_the_draws_numpy_answer_and_mistakes_are_the_worked_solutions(ex, monkeypatch):
+    """A draw's ``problems`` recomputes the answer and the known mistakes in numpy (fast, for
+    every row); on sampled rows they must be the worked solution's and MISTAKES' values, so
+    that the second derivation cannot drift from the first."""
+    rows = V.table()["keys"][ex.variants.key]
+    for k in sample_rows(len(rows), 3):
+        values = _draws_values(ex, rows[k], monkeypatch)
+        assert values is not None, f"{ex.name}: its draw never compares its values"
+        right, wrong = _answers(ex, rows[k])
+        real = {"answer": right, **wrong}
+        for key, value in values.items():
+            assert key in real, (ex.name, key)
+            np.testing.assert_allclose(
+                np.ravel(value), _floats(real[key]), rtol=1e-9, atol=1e-9, err_msg=f"{key} {k}"
+            )

@@ -79,7 +79,7 @@ from ..symbolic import (
     z,
 )
 from ._check import expected_shape_phrase, judge
-from ._identity import how_to_set_id
+from ._identity import SETTINGS_FILE, check_domain, course_key, how_to_set_id, normalise_id
 from ._model import LEVELS, CheckResult, Choice, Exercise, Expr, Value, Variants, format_parameter
 from ._reading import Rejected
 from ._store import Fingerprints
@@ -90,12 +90,14 @@ from ._variants import (
     variant_index,
     variant_name,
     variant_of,
+    variant_row,
     variants_enabled,
 )
 
 __all__ = [
     "EXERCISES",
     "LEVELS",
+    "SETTINGS_FILE",
     "CheckResult",
     "Choice",
     "Exercise",
@@ -103,17 +105,22 @@ __all__ = [
     "Value",
     "Variants",
     "check",
+    "check_domain",
+    "course_key",
     "exercises",
     "get",
     "identity_line",
     "how_to_set_id",
     "names",
+    "normalise_id",
     "parameters",
     "set_student_id",
     "show",
     "student_id",
     "variant",
     "variant_index",
+    "variant_of",
+    "variant_row",
     "variants_enabled",
     "your_numbers",
     "A",

@@ -270,8 +270,7 @@ def _property_hint(ex, M, syms, pts):
 def judge_expr(ex, fp, answer):
     spec = ex.answer
     syms = E.base_symbols(spec)
-    readable = set(spec.allowed or ()) | set(spec.domain) | set(syms)
-    form, M = read_answer(answer, spec.shape, readable)
+    form, M = read_answer(answer, spec.shape, E.readable_symbols(spec))
     violation = form_violation(spec, form, M)
     pts, near = E.points(ex.name, spec)
     A = E.values(form, M, syms, pts)
@@ -296,7 +295,7 @@ def judge_expr(ex, fp, answer):
 # ------------------------------------------------------------------------------ numbers
 
 
-def _numbers(M):
+def numbers(M):
     """The entries of a numeric answer, evaluated in double precision (never in mpmath, whose
     arbitrary precision makes sin(exp(exp(50))) take forever)."""
     f = E.numeric_function((), M)
@@ -511,7 +510,7 @@ _SINGLE = (
 
 def judge_value(ex, fp, answer):
     form, M = read_answer(answer, ex.answer.shape, set(), numeric=True)
-    v = _numbers(M)
+    v = numbers(M)
     shape = ex.answer.shape
     if _all_right(ex.name, fp, v, shape):
         return "correct", "correct."

@@ -127,6 +127,12 @@ def base_symbols(spec):
     return tuple(sorted(syms, key=lambda s: s.name))
 
 
+def readable_symbols(spec):
+    """The symbols an answer to ``spec`` may be written in: its allowed stand-ins (``W``,
+    ``xx`` ...), its domain and the base symbols they stand for."""
+    return set(spec.allowed or ()) | set(spec.domain) | set(base_symbols(spec))
+
+
 def _random_rotations(rng, n):
     """Uniform rotations from unit quaternions. Kept here rather than calling
     ``so3.random_rotations``: the stored fingerprints depend on these exact draws, so a change
@@ -174,6 +180,18 @@ def _draw(rng, unit, spec, near):
     if first == S.x_0:
         return {first: rng.uniform(0.5, 2.0) * rng.choice([-1.0, 1.0])}
     return {first: rng.normal()}  # a coordinate of x, y, z or d
+
+
+def fresh_points(spec, rng, n):
+    """``n`` points drawn from ``rng`` over the same domain as :func:`points` (no pairs, no
+    points near zero): ``{symbol: array}`` of the base symbols of ``spec``."""
+    rows = []
+    for _ in range(n):
+        row = {}
+        for unit in _units(spec):
+            row.update(_draw(rng, unit, spec, False))
+        rows.append(row)
+    return {s: np.array([r[s] for r in rows]) for s in base_symbols(spec)}
 
 
 @lru_cache(maxsize=64)

@@ -110,7 +110,9 @@ class CheckResult(Verdict):
 
     ``status`` is one of ``"correct"``, ``"wrong"``, ``"form"`` (right value, asked form not
     met), ``"malformed"``, ``"not allowed"``, ``"too complex"``, ``"no answer"`` and ``"no id"``
-    (an exercise with numbers of its own per student, and no student id set).
+    (an exercise with numbers of its own per student, and no student id set). The instructor's
+    grader answers with this type too, adding ``"forged"`` (a record that no check wrote) and
+    ``"unknown"`` (no such exercise).
 
     Examples
     --------

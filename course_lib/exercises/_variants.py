@@ -147,6 +147,24 @@ def variant_of(variants, student=None):
     return k, copy.deepcopy(rows[k])
 
 
+def variant_row(variants, index):
+    """Row ``index`` of the table of an exercise's :class:`Variants` (row 0: the default),
+    whether or not variants are on; with no table for its key, the default is the only row.
+    A copy.
+
+    Raises
+    ------
+    IndexError
+        If the table has no row ``index``; the message says how many it has.
+    """
+    rows = table()["keys"].get(variants.key) or [variants.default]
+    if type(index) is not int or not 0 <= index < len(rows):
+        raise IndexError(
+            f"variant {index!r} of {variants.key}: the table has rows 0 to {len(rows) - 1}"
+        )
+    return copy.deepcopy(rows[index])
+
+
 def variant_name(name, index):
     """The name an exercise's variant is fingerprinted under: ``name`` for the default
     (index 0), ``name@index`` otherwise.

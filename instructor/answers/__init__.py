@@ -9,7 +9,8 @@ Each holds, for the exercises of its chapter:
   (:mod:`instructor.build.variant_draws`); :mod:`.common` holds what the draws share.
 
 This package is the one loader of them: the build steps, the grader and the tests read the
-answers through :func:`load`, :func:`solutions`, :func:`mistakes` and :func:`draws` only.
+answers through :func:`load`, :func:`solutions`, :func:`mistakes` and :func:`draws`, and run a
+worked solution with :func:`worked` only.
 A Gradescope autograder holds this file and its own chapter's module only.
 
 >>> sorted(solutions(1))[:2]
@@ -18,11 +19,13 @@ A Gradescope autograder holds this file and its own chapter's module only.
 
 from __future__ import annotations
 
+import copy
 from importlib import import_module
 
 from course_lib import exercise_bank
+from course_lib.exercises import EXERCISES
 
-__all__ = ["load", "solutions", "mistakes", "draws"]
+__all__ = ["load", "solutions", "mistakes", "draws", "worked"]
 
 
 def load(chapter):
@@ -58,3 +61,21 @@ def draws():
             raise ValueError(f"chapter {chapter}: variant keys defined twice: {sorted(clash)}")
         out |= found
     return out
+
+
+def worked(name, params=None):
+    """The namespace of exercise ``name``'s worked solution: the chapter's set-up code run,
+    then ``P`` set to ``params`` (a variant's parameters; None: the exercise's default numbers)
+    for an exercise with variants, then its solution code run. The answer is
+    ``ns[ex.answer_variable]``; a known mistake's expression is evaluated in ``ns``.
+
+    >>> worked("hat_fifth")["answer_hat_fifth"].shape
+    (3, 3)
+    """
+    ex = EXERCISES[name]
+    ns = {}
+    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)  # the instructor's own code
+    if ex.variants is not None:
+        ns["P"] = copy.deepcopy(ex.variants.default if params is None else params)
+    exec(solutions(ex.chapter)[name], ns)
+    return ns

@@ -138,24 +138,13 @@ def _frames_problems(p):
     R_ac = R_ab @ R_bc
     if np.array_equal(R_ac, np.eye(3)):
         out.append("R_ac is the identity")
-    wrong = {"order": R_bc @ R_ab, "rows": R_ab.T @ R_bc.T}
-    for mid, M in wrong.items():
-        if np.array_equal(M, R_ac):
-            out.append(f"compose_frames: the mistake {mid!r} gives the right answer")
-    if np.array_equal(wrong["order"], wrong["rows"]):
-        out.append("compose_frames: the mistakes 'order' and 'rows' give the same matrix")
-    v_a = R_ac @ v_c
-    vectors = {"answer": v_a, "order": R_bc @ R_ab @ v_c, "inverse": R_ac.T @ v_c,
-               "rows": R_ab.T @ R_bc.T @ v_c}  # fmt: skip
-    seen = {}
-    for label, v in vectors.items():
-        key = tuple(v)
-        if key in seen:
-            out.append(f"chain_vector: {label!r} and {seen[key]!r} give the same vector")
-        seen.setdefault(key, label)
     if len(set(np.abs(v_c))) < 3 or 0 in v_c:
         out.append("v_c must have three distinct non-zero magnitudes")
-    return out
+    # integer entries: "less than 0.01 apart" is "equal"
+    matrices = {"answer": R_ac, "order": R_bc @ R_ab, "rows": R_ab.T @ R_bc.T}
+    vectors = {"answer": R_ac @ v_c, "order": R_bc @ R_ab @ v_c, "inverse": R_ac.T @ v_c,
+               "rows": R_ab.T @ R_bc.T @ v_c}  # fmt: skip
+    return out + apart("compose_frames", matrices) + apart("chain_vector", vectors)
 
 
 def _trace(rng):
@@ -175,12 +164,7 @@ def _trace_problems(p):
         out.append("no rotation has these diagonal entries with an axis off the coordinate axes")
     theta = np.arccos(np.clip(c, -1, 1))
     values = {"answer": theta, "cosine": c, "no_minus_one": np.arccos(np.clip(d.sum() / 2, -1, 1))}
-    names = list(values)
-    for i, a in enumerate(names):
-        for b in names[i + 1 :]:
-            if abs(values[a] - values[b]) < 0.01:
-                out.append(f"angle_from_trace: {a} and {b} are too close")
-    return out
+    return out + apart("angle_from_trace", values)
 
 
 _AXES = "xyz"
@@ -212,12 +196,7 @@ def _camera_problems(p):
         out.append("the first two turns share their axis: world and own axis are the same")
     matrices = {"answer": R3 @ R1 @ R2, "all_body": R1 @ R2 @ R3, "all_world": R3 @ R2 @ R1,
                 "swapped": R2 @ R1 @ R3}  # fmt: skip
-    names = list(matrices)
-    for i, a in enumerate(names):
-        for b in names[i + 1 :]:
-            if np.abs(matrices[a] - matrices[b]).max() < 0.05:
-                out.append(f"fixed_vs_body: {a} and {b} give the same orientation")
-    return out
+    return out + apart("fixed_vs_body", matrices, gap=0.05)
 
 
 #: Angles of 4.4 with a trace and 2 sin θ a first-year writes exactly: (tr R, its LaTeX,

@@ -24,7 +24,7 @@ import json
 import sys
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import replace
-from functools import cache, lru_cache
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -33,7 +33,7 @@ from course_lib import exercise_bank
 from course_lib.exercises import EXERCISES, Choice, Expr, Value
 from course_lib.exercises import _digests as D
 from course_lib.exercises import _engine as E
-from course_lib.exercises._check import _numbers
+from course_lib.exercises._check import numbers as _numbers
 from course_lib.exercises._reading import read_answer, read_choice
 from course_lib.exercises._store import FIELD, Fingerprints, pack
 from course_lib.exercises._transforms import (
@@ -55,17 +55,6 @@ TABLES = ROOT / "course_lib" / "exercise_bank" / TABLE_FILE
 def solutions(chapter):
     """The SOLUTIONS and MISTAKES dicts of ``instructor/answers/chNN.py``."""
     return answers.solutions(chapter), answers.mistakes(chapter)
-
-
-def run(ex, code, params=None):
-    """Namespace after the chapter's set-up cell and the solution code; ``params``: a variant's
-    parameters, the ``P`` the answer cell of an exercise with variants sets."""
-    ns = {}
-    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)
-    if ex.variants is not None:
-        ns["P"] = ex.variants.default if params is None else params
-    exec(code, ns)
-    return ns
 
 
 def _close(a, b):
@@ -191,10 +180,11 @@ def expr_fingerprint(ex, answer, mistakes):
 FINGERPRINTS = {Value: value_fingerprint, Choice: choice_fingerprint, Expr: expr_fingerprint}
 
 
-def fingerprint(ex, code, mistakes, params=None):
+def fingerprint(ex, mistakes, params=None):
     """The stored record of one exercise (of one variant's ``params``: ``ex`` named after the
-    variant, :func:`course_lib.exercises._variants.variant_name`)."""
-    ns = run(ex, code, params)
+    variant, :func:`course_lib.exercises._variants.variant_name`), from its worked solution
+    (:func:`instructor.answers.worked`) and its known ``mistakes``."""
+    ns = answers.worked(ex.name.split("@")[0], params)
     wrong = {}
     for mid, expr in mistakes.items():
         if mid not in ex.mistakes:
@@ -221,7 +211,7 @@ def build(sample=None, jobs=None, reuse=False, checkpoint=None):
         for ex in (e for e in EXERCISES.values() if e.chapter == chapter):
             if ex.name not in sols:
                 raise ValueError(f"{ex.name}: no reference solution in instructor/answers")
-            out[ex.name] = fingerprint(ex, sols[ex.name], mistakes.get(ex.name, {}))
+            out[ex.name] = fingerprint(ex, mistakes.get(ex.name, {}))
             rows = variant_rows(ex)
             if not rows:
                 continue
@@ -254,17 +244,12 @@ def _row_fingerprint(task):
     :func:`build`, run in a worker process)."""
     name, k, params = task
     ex = EXERCISES[name]
-    sols, mistakes = _solutions_cached(ex.chapter)
+    mistakes = answers.mistakes(ex.chapter)
     named = replace(ex, name=variant_name(name, k))
     try:
-        return fingerprint(named, sols[name], mistakes.get(name, {}), params)
+        return fingerprint(named, mistakes.get(name, {}), params)
     except Exception as err:
         raise ValueError(f"{named.name} ({params}): {err}") from err
-
-
-@cache
-def _solutions_cached(chapter):
-    return solutions(chapter)
 
 
 def variant_rows(ex):

@@ -25,11 +25,8 @@ from functools import cache
 import numpy as np
 import sympy as sp
 
-from course_lib import exercise_bank
 from course_lib.exercises import EXERCISES, Choice, Value
-from course_lib.exercises import _engine as E
-from course_lib.exercises._reading import read_choice
-from course_lib.exercises._variants import table
+from course_lib.exercises import compare as C
 from instructor import answers
 
 from . import verify as V
@@ -46,45 +43,27 @@ SHOWN = 120  # characters of an answer's text kept for the report
 OTHER = "other-numbers"
 
 
-def _mistakes(chapter):
-    return answers.mistakes(chapter)
-
-
 @cache
 def _mistaken(name, index):
     """``{key: answer as the checker reads it}`` of exercise ``name``'s known mistakes, for its
     variant ``index`` (the instructor's code, run here like the reference solution)."""
     ex = EXERCISES[name]
-    exprs = _mistakes(ex.chapter).get(name, {})
+    exprs = answers.mistakes(ex.chapter).get(name, {})
     if not exprs:
         return {}
-    ns = {}
-    exec(exercise_bank.chapter_module(ex.chapter).SETUP, ns)  # the instructor's own code
-    if ex.variants is not None:
-        rows = table()["keys"].get(ex.variants.key) or [ex.variants.default]
-        ns["P"] = rows[index]
-    exec(V._solution_code(ex.chapter)[name], ns)
+    ns = answers.worked(name, V.parameters_of(name, index))
     out = {}
     for key, expr in exprs.items():
         try:
-            out[key] = V._read(ex, eval(expr, ns))
+            out[key] = C.read(ex, eval(expr, ns))
         except Exception:  # noqa: BLE001 - a mistake that cannot be read is never matched
             continue
     return out
 
 
 def _answer(ex, data):
-    if isinstance(ex.answer, Choice):
-        return read_choice(data.get("answer"), ex.answer.letters)
-    return V._read(ex, parse(data.get("answer")))
-
-
-def _same(ex, got, want):
-    if isinstance(ex.answer, Choice):
-        return got == want
-    if isinstance(ex.answer, Value):
-        return bool(V._same_numbers(got, want))
-    return V._same_symbolic(ex, got, want)
+    answer = data.get("answer")
+    return C.read(ex, answer if isinstance(ex.answer, Choice) else parse(answer))
 
 
 def known_mistake(name, got, index=0):
@@ -94,15 +73,16 @@ def known_mistake(name, got, index=0):
     Examples
     --------
     >>> from course_lib.exercises import xx, xy, yy
-    >>> known_mistake("lagrange_identity", V._read(EXERCISES["lagrange_identity"], xx * yy + xy**2))
+    >>> ex = EXERCISES["lagrange_identity"]
+    >>> known_mistake(ex.name, C.read(ex, xx * yy + xy**2))
     'plus'
-    >>> known_mistake("lagrange_identity", V._read(EXERCISES["lagrange_identity"], xx * yy)) is None
+    >>> known_mistake(ex.name, C.read(ex, xx * yy)) is None
     True
     """
     ex = EXERCISES[name]
     for key, want in _mistaken(name, index).items():
         try:
-            if _same(ex, got, want):
+            if C.same(ex, got, want):
                 return key
         except Exception:  # noqa: BLE001 - a comparison that fails is no match
             continue
@@ -130,14 +110,13 @@ def group_of(ex, got):
         return text, text
     form, M = got
     if isinstance(ex.answer, Value):
-        nums = _round(V._numbers(M))
+        nums = _round(C.numbers(M))
         text = ", ".join(f"{v:.4g}" if isinstance(v, float) else v for v in nums)
         text = text if len(nums) == 1 else f"({text})"
         return text, text
-    pts = V.fresh_points(ex.answer, np.random.default_rng(34))
-    pts = {s: v[:GROUP_POINTS] for s, v in pts.items()}
+    pts = C.fresh_points(ex.answer, np.random.default_rng(34), GROUP_POINTS)
     with np.errstate(all="ignore"):
-        vals = E.values(form, M, E.base_symbols(ex.answer), pts)
+        vals = C.values(ex, got, pts)
     key = hashlib.sha256(repr(_round(vals)).encode()).hexdigest()[:16]
     text = _text(M)
     return key, text if len(text) <= SHOWN else text[: SHOWN - 1] + "…"
@@ -145,21 +124,28 @@ def group_of(ex, got):
 
 def _shown_right(ex, got, shown, index):
     """Is the answer right for the variant the notebook showed (another id's numbers)?"""
-    if ex.variants is None or shown is None or shown == index:
+    if ex.variants is None or type(shown) is not int or shown == index:
         return False
-    rows = table()["keys"].get(ex.variants.key) or []
-    return 0 <= shown < len(rows) and _same(ex, got, V.expected(ex.name, shown))
+    try:
+        want = V.expected(ex.name, shown)
+    except IndexError:  # no such row: a forged number
+        return False
+    return C.same(ex, got, want)
 
 
 def entry(name, data, student, result, checked=None):
     """What the report keeps of one graded answer (a JSON-ready dict).
 
     ``data`` is the record (or None when there was none), ``result`` the grader's verdict
-    (:class:`instructor.grading.verify.Verdict`, or None when a grading note gave 0 before any
+    (a :class:`course_lib.exercises.CheckResult`, or None when a grading note gave 0 before any
     verdict), ``checked`` whether the check cell had been run in the handed-in notebook (None:
     unknown).
     """
-    out = {"exercise": name, "verdict": result.status if result else "zero", "mistake": None}
+    out = {
+        "exercise": name,
+        "verdict": "zero" if result is None else result.status,
+        "mistake": None,
+    }
     ex = EXERCISES.get(name)
     index = V.student_parameters(name, student)[0] if ex is not None else 0
     out["variant"] = index if ex is not None and ex.variants is not None else None
@@ -169,7 +155,7 @@ def entry(name, data, student, result, checked=None):
     if result is None or result.status != "wrong" or ex is None:
         return out
     try:
-        with V._deadline(V.SECONDS), np.errstate(all="ignore"):
+        with V.deadline(V.SECONDS), np.errstate(all="ignore"):
             got = _answer(ex, data)
             out["mistake"] = known_mistake(name, got, index)
             if out["mistake"] is None and _shown_right(ex, got, out["shown"], index):

@@ -5,7 +5,7 @@
                                                             # with IDs, the key of each
     python -m instructor.grading.identity --domain berkeley.edu         # the course's e-mail domain
 
-The course's key of a student (:mod:`course_lib.exercises._identity`) is their normalised
+The course's key of a student (:func:`course_lib.exercises.course_key`) is their normalised
 institutional e-mail, or login, from which their exercises' numbers are drawn. Every platform
 names the student its own way: nbgrader's student id (a folder name, often the JupyterHub
 user), Gradescope's ``submission_metadata.json`` (e-mail, ``sid``), a laptop's
@@ -35,12 +35,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from course_lib.exercises._identity import (
-    SETTINGS_FILE,
-    check_domain,
-    course_key,
-    normalise_id,
-)
+from course_lib.exercises import SETTINGS_FILE, check_domain, course_key, normalise_id
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -431,7 +431,7 @@ class VerifyRecords(NbGraderPreprocessor):
             if not result.ok:
                 self._lost.append(name)
         if not result.ok:
-            note = note_output(f"{name}: 0 points from the grader: {result.note}.")
+            note = note_output(f"{name}: 0 points from the grader: {result.message}.")
             hint = _hint(cell)
             if hint:  # the student's own check's hint, shown after the note (feedback, Gradescope)
                 note.traceback.append(f"{HINT}{hint}")

@@ -35,7 +35,7 @@ from sympy.matrices.expressions import (
     ZeroMatrix,
 )
 
-from course_lib.exercises._reading import _FUNCTIONS as ANSWER_FUNCTIONS
+from course_lib.exercises.compare import ALLOWED_FUNCTIONS
 
 __all__ = ["Unreadable", "parse", "CONSTRUCTORS"]
 
@@ -48,7 +48,7 @@ MAX_NAME = 40
 MAX_BITS = 20_000  # of any exact number built, about 6,000 digits
 
 # The elementary functions of the answer language: the checker's own list, read in once.
-_FUNCTIONS = {f.__name__: f for f in ANSWER_FUNCTIONS}
+_FUNCTIONS = {f.__name__: f for f in ALLOWED_FUNCTIONS}
 #: The names a record may call, and what they build.
 CONSTRUCTORS = {
     "Add": sp.Add,

@@ -131,7 +131,7 @@ def kernel_env(path=(), prefix=sys.prefix, work=SCRATCH, student=""):
         "OMP_NUM_THREADS": "1",
         "OPENBLAS_NUM_THREADS": "1",
     }
-    if student:  # the grader's id wins over the notebook's set_student_id (course_lib._identity)
+    if student:  # the grader's id wins over the notebook's set_student_id()
         env["COURSE_GRADER_ID"] = student
     return env
 

@@ -33,7 +33,6 @@ from course_lib import exercise_bank
 from course_lib.exercises import EXERCISES, Choice, Expr, Value
 from course_lib.exercises import _digests as D
 from course_lib.exercises import _engine as E
-from course_lib.exercises._check import numbers as _numbers
 from course_lib.exercises._reading import read_answer, read_choice
 from course_lib.exercises._store import FIELD, Fingerprints, pack
 from course_lib.exercises._transforms import (
@@ -42,6 +41,7 @@ from course_lib.exercises._transforms import (
     PERMUTATIONS,
 )
 from course_lib.exercises._variants import TABLE_FILE, variant_name
+from course_lib.exercises.compare import numbers as _numbers
 from instructor import answers
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -19,7 +19,6 @@ import signal
 import threading
 from contextlib import contextmanager
 from functools import cache
-from pathlib import Path
 
 import numpy as np
 
@@ -29,11 +28,8 @@ from instructor import answers
 
 from .records import Unreadable, parse
 
-__all__ = ["verdict", "expected", "student_parameters", "SOLUTIONS", "SECONDS", "deadline"]
+__all__ = ["verdict", "expected", "student_parameters", "parameters_of", "SECONDS", "deadline"]
 
-ROOT = Path(__file__).resolve().parents[2]
-#: The folder of the answers (:mod:`instructor.answers`), which the confined kernel never sees.
-SOLUTIONS = ROOT / "instructor" / "answers"
 SECONDS = 20  # one verdict at most (the reading bounds keep it far below)
 SAMPLED = " (compared at fresh random points)"
 

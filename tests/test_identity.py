@@ -336,3 +336,18 @@ def test_regression_a_formula_in_a_record_never_reaches_the_identity_report(tmp_
     for value in rows[0].values():
         assert not value.startswith(("=", "+", "-", "@")), rows[0]
     assert rows[0]["shown_as"] == "'" + evil and rows[0]["student"] == "'@bob"
+
+
+def test_a_student_found_by_sid_when_the_email_is_unknown_is_told_so_regression_silent_sid(
+    tmp_path,
+):
+    """Gradescope's e-mail not in the roster, its sid in it: graded as the roster's student of
+    that sid (as before), and now the feedback says so instead of nothing."""
+    roster = load([_roster(tmp_path, "alice7@example.edu,3031042\n")])
+    meta = {"users": [{"email": "Alice.Other@Gmail.com", "sid": "3031042", "id": 5}]}
+    who = identity(meta, roster)
+    assert (who.key, who.how, who.given) == (KEY, "roster", "alice.other@gmail.com")
+    assert "'alice.other@gmail.com' is not in the course's roster" in who.note
+    assert "the roster's student of the sid 3031042" in who.note and KEY in who.note
+    known = identity({"users": [{"email": "ALICE7@example.edu", "sid": "3031042"}]}, roster)
+    assert known.key == KEY and known.note == ""  # found by its e-mail: nothing to say

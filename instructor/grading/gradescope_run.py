@@ -59,6 +59,7 @@ import signal
 import subprocess
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 ROOT_ENV = "ROTATIONS_AUTOGRADER_ROOT"
@@ -104,33 +105,38 @@ def _safe(value):
 
 
 def _aliases(metadata):
-    """The ids Gradescope gives of the submission's student: ``users[0]``'s ``email``, then
-    ``sid``, then ``id`` (the non-empty ones)."""
+    """The ids Gradescope gives of the submission's student, ``(field, id)``: ``users[0]``'s
+    ``email``, then ``sid``, then ``id`` (the non-empty ones)."""
     users = metadata.get("users") if isinstance(metadata, dict) else None
     user = users[0] if isinstance(users, list) and users and isinstance(users[0], dict) else {}
-    return [str(user[k]) for k in ("email", "sid", "id") if user.get(k) not in (None, "")]
+    return [(k, str(user[k])) for k in ("email", "sid", "id") if user.get(k) not in (None, "")]
 
 
 def identity(metadata, roster):
     """The :class:`instructor.grading.identity.Resolved` key of the submission's student: the first
     of its e-mail, ``sid`` and ``id`` that the roster knows, else the e-mail (or the first id
-    there is) as given, normalised, with a note when there is a roster.
+    there is) as given, normalised, with a note when there is a roster. A student found by
+    ``sid`` or ``id`` when the e-mail is not in the roster gets a note saying so.
 
     Examples
     --------
     >>> from instructor.grading.identity import Roster
     >>> r = Roster({"3031042": "alice@b.edu", "alice@b.edu": "alice@b.edu"}, ["roster.csv"])
-    >>> identity({"users": [{"sid": "3031042", "email": "Alice@old.edu"}]}, r).key
-    'alice@b.edu'
+    >>> who = identity({"users": [{"sid": "3031042", "email": "Alice@old.edu"}]}, r)
+    >>> who.key, who.note[:43]
+    ('alice@b.edu', "the id 'alice@old.edu' is not in the course")
     >>> identity({"users": [{"email": " Bob@B.edu"}]}, Roster()).key
     'bob@b.edu'
     """
     names = _aliases(metadata)
-    for name in names:
+    for field, name in names:
         got = roster.resolve(name)
         if got.how == "roster":
-            return got
-    return roster.resolve(names[0] if names else "unknown-student")
+            if field == names[0][0]:
+                return got
+            first = roster.resolve(names[0][1])
+            return replace(got, given=first.given, via=f"{field} {got.given}")
+    return roster.resolve(names[0][1] if names else "unknown-student")
 
 
 def student_id(metadata):
@@ -147,7 +153,7 @@ def student_id(metadata):
     'unknown-student'
     """
     names = _aliases(metadata)
-    return _safe(names[0]) if names else "unknown-student"
+    return _safe(names[0][1]) if names else "unknown-student"
 
 
 def assignment(source=SOURCE):
@@ -449,7 +455,8 @@ def _grade(top, started, budget, course):
     results["output"] += f" Confinement of the student's code: {name}."
     results["extra_data"]["confinement"] = name
     results["extra_data"]["student"] = student  # the folder name nbgrader graded
-    results["extra_data"]["identity"].update(given=who.given, graded_as=who.key, how=who.how)
+    ident = {"given": who.given, "graded_as": who.key, "how": who.how}
+    results["extra_data"]["identity"].update(ident, **({"via": who.via} if who.via else {}))
     if who.note:
         results["output"] = _short(f"{results['output']}\n\nYour student id: {who.note}")
     return results

@@ -62,10 +62,19 @@ class Resolved:
     given: str
     key: str
     how: str
+    #: Another id of the same submission that the roster knew when ``given`` was not in it
+    #: (Gradescope: ``"sid 3031042"`` when the e-mail is unknown); "" otherwise.
+    via: str = ""
 
     @property
     def note(self):
         """One line for the feedback and the report ('' when the roster knew the id)."""
+        if self.how == "roster" and self.via:
+            return (
+                f"the id {self.given!r} is not in the course's roster: graded as {self.key!r}, "
+                f"the roster's student of the {self.via}; if that is not you, tell your "
+                "instructor."
+            )
         if self.how == "not in the roster":
             return (
                 f"the id {self.given!r} is not in the course's roster: graded on the numbers of "

@@ -187,6 +187,14 @@ bench-gradescope: $(STAMP)
 test-gradescope: $(STAMP)
 	$(BIN)/python -m pytest -m gradescope tests/test_grading_gradescope.py -q
 
+# Gradescope's image build (setup.sh) and one run_autograder in a real Ubuntu userland
+# (debootstrap), under Docker's constraint: UBUNTU=jammy (22.04) or noble (24.04). Needs root
+# and archive.ubuntu.com; 10-20 minutes; not in CI (docs/grading.md).
+.PHONY: gradescope-image
+UBUNTU ?= jammy
+gradescope-image: $(STAMP)
+	bash tests/gradescope_image.sh $(UBUNTU) $(or $(PS),ps01)
+
 # What is too slow for `make test` (docs/testing.md), on two workers: the rest of the attacks on
 # grading through real nbgrader and the Gradescope autograder in a temporary /autograder. Test by
 # test (--dist loadgroup), not file by file: one file's run_autograder tests were half the run;

@@ -28,12 +28,23 @@ command -v debootstrap >/dev/null || apt-get install -y -q debootstrap
 if [ ! -f "$root/.complete" ]; then
     say "debootstrap $release into $root"
     rm -rf "$root"
+    script=/usr/share/debootstrap/scripts/$release
+    [ -e "$script" ] || script=/usr/share/debootstrap/scripts/gutsy  # Debian's lacks noble's
     debootstrap --variant=minbase --components=main,universe "$release" "$root" \
-        http://archive.ubuntu.com/ubuntu >"$repo/build/debootstrap-$release.log" 2>&1 \
+        http://archive.ubuntu.com/ubuntu "$script" >"$repo/build/debootstrap-$release.log" 2>&1 \
         || { tail -20 "$repo/build/debootstrap-$release.log"; exit 1; }
     touch "$root/.complete"
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+# the pockets of Docker's ubuntu image, which Gradescope's base image is built from (debootstrap
+# writes the release pocket alone: jammy's python3.11-venv is in jammy-updates only)
+archive=http://archive.ubuntu.com/ubuntu/
+{
+    echo "deb $archive $release main restricted universe multiverse"
+    echo "deb $archive $release-updates main restricted universe multiverse"
+    echo "deb $archive $release-backports main restricted universe multiverse"
+    echo "deb http://security.ubuntu.com/ubuntu/ $release-security main restricted universe multiverse"
+} >"$root/etc/apt/sources.list"
 
 mounted=()
 cleanup() {
@@ -59,10 +70,19 @@ mkdir -p "$root/autograder/source" "$root/autograder/results" "$root/autograder/
 cp "$root/autograder/source/run_autograder" "$root/autograder/run_autograder"
 chmod 755 "$root/autograder/source/setup.sh" "$root/autograder/run_autograder"
 
+# A machine whose outgoing HTTPS goes through a proxy with a certificate authority of its own
+# (this one's: /usr/local/share/ca-certificates) lends pip its bundle; Gradescope needs none.
+cert=()
+if compgen -G "/usr/local/share/ca-certificates/*.crt" >/dev/null; then
+    mkdir -p "$root/etc/ssl"
+    cp /etc/ssl/certs/ca-certificates.crt "$root/etc/ssl/host-bundle.crt"
+    cert=(PIP_CERT=/etc/ssl/host-bundle.crt)
+fi
+
 in_image() {  # a command in the chroot, as root, under Docker's seccomp and capabilities
     /usr/bin/python3 "$repo/tests/docker_seccomp.py" -- /usr/sbin/chroot "$root" \
         /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        HOME=/root LANG=C.UTF-8 /bin/bash -c "$1"
+        HOME=/root LANG=C.UTF-8 "${cert[@]}" /bin/bash -c "$1"
 }
 
 say "setup.sh (its self-test grades the solved copy and a blank one)"

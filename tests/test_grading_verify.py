@@ -262,3 +262,17 @@ def test_record_shows_the_verdict_leaves_one_record_and_a_wrong_answer_stops_wit
     assert data["text/plain"] == "" and data[MIME]["kind"] == "matrix"
     assert verify.verdict("hat_fifth", data[MIME]).status == "wrong"
     assert W in parse(data[MIME]["answer"]).free_symbols
+
+
+def test_a_record_of_the_wrong_kind_is_forged_regression_unwhitelisted_choice_kind():
+    """A "choice" record skips the whitelist of records.parse (its answer is letters): on an
+    exercise that asks for numbers it once reached the reader raw, and the right numbers as a
+    JSON list were graded correct. A kind that does not fit the exercise is now forged."""
+    ex = EXERCISES["coords_by_projection"]
+    right = [float(v) for v in np.ravel(np.asarray(_namespace(ex.name)[ex.answer_variable]))]
+    data = {"version": 1, "exercise": ex.name, "kind": "choice", "answer": right}
+    got = verify.verdict(ex.name, data)
+    assert got.status == "forged" and "kind 'choice'" in got.message
+    letters = next(e for e in EXERCISES.values() if e.answer.__class__.__name__ == "Choice")
+    data = {"version": 1, "exercise": letters.name, "kind": "explicit", "answer": "1"}
+    assert verify.verdict(letters.name, data).status == "forged"

@@ -185,10 +185,10 @@ def _draw(rng, unit, spec, near):
 def fresh_points(spec, rng, n):
     """``n`` points drawn from ``rng`` over the same domain as :func:`points` (no pairs, no
     points near zero): ``{symbol: array}`` of the base symbols of ``spec``."""
-    rows = []
+    units, rows = _units(spec), []
     for _ in range(n):
         row = {}
-        for unit in _units(spec):
+        for unit in units:
             row.update(_draw(rng, unit, spec, False))
         rows.append(row)
     return {s: np.array([r[s] for r in rows]) for s in base_symbols(spec)}

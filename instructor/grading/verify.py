@@ -73,6 +73,8 @@ def _judge(ex, data, index):
         return _verdict("malformed", "the answer could not be read (the check cell says why)")
     if kind not in ("choice", "explicit", "matrix"):
         return _verdict("forged", "a record of an unknown kind")
+    if (kind == "choice") != isinstance(ex.answer, Choice):
+        return _verdict("forged", f"a record of kind {kind!r}, not what this exercise asks for")
     answer = data.get("answer") if kind == "choice" else parse(data.get("answer"))
     got = C.read(ex, answer)
     if not C.same(ex, got, expected(ex.name, index)):

@@ -24,13 +24,9 @@ ROOT = Path(__file__).resolve().parents[1]
 NAMES = list(EXERCISES)
 
 
-def _namespace(name):
-    return answers.worked(name)  # with variants: the answer cell's P, the default numbers
-
-
 @pytest.mark.parametrize("name", NAMES)
 def test_the_reference_solution_is_correct_and_every_known_mistake_is_not(name):
-    ns = _namespace(name)
+    ns = answers.worked(name)
     ex = EXERCISES[name]
     assert verify.verdict(name, answer_record(name, ns[ex.answer_variable])).ok
     for mid, expr in answers.mistakes(ex.chapter).get(name, {}).items():
@@ -44,7 +40,7 @@ def test_an_answer_fitted_to_the_checkers_seeded_points_is_wrong_at_fresh_points
     name = "composed_angle"
     spec = EXERCISES[name].answer
     pts, _ = E.points(name, spec)
-    ref = _namespace(name)["answer_" + name]
+    ref = answers.worked(name)["answer_" + name]
     f = sp.lambdify(sorted(ref.free_symbols, key=str), ref)
     target = f(pts[alpha], pts[E.base_symbols(spec)[1]])
     a = pts[alpha]
@@ -91,7 +87,9 @@ def test_fresh_points_come_from_the_domain_of_the_checkers_seeded_points():
 
 def test_the_graders_verdict_is_the_checkers_result_type():
     ex = EXERCISES["hat_fifth"]
-    right = verify.verdict(ex.name, answer_record(ex.name, _namespace(ex.name)["answer_hat_fifth"]))
+    right = verify.verdict(
+        ex.name, answer_record(ex.name, answers.worked(ex.name)["answer_hat_fifth"])
+    )
     forged = verify.verdict(ex.name, {"version": 1, "exercise": "other"})
     assert type(right) is type(forged) is CheckResult
     assert right.ok and right.status == "correct" and str(right).startswith("✓")
@@ -250,7 +248,7 @@ def test_record_shows_the_verdict_leaves_one_record_and_a_wrong_answer_stops_wit
 
     shown = []
     monkeypatch.setattr(IPython.display, "display", lambda data, raw: shown.append((data, raw)))
-    right = _namespace("hat_fifth")["answer_hat_fifth"]
+    right = answers.worked("hat_fifth")["answer_hat_fifth"]
     assert record("hat_fifth", right, check("hat_fifth", right)) is None
     ((data, raw),) = shown
     assert raw and data["text/plain"] == "✓ hat_fifth: correct."
@@ -269,7 +267,7 @@ def test_a_record_of_the_wrong_kind_is_forged_regression_unwhitelisted_choice_ki
     exercise that asks for numbers it once reached the reader raw, and the right numbers as a
     JSON list were graded correct. A kind that does not fit the exercise is now forged."""
     ex = EXERCISES["coords_by_projection"]
-    right = [float(v) for v in np.ravel(np.asarray(_namespace(ex.name)[ex.answer_variable]))]
+    right = [float(v) for v in np.ravel(np.asarray(answers.worked(ex.name)[ex.answer_variable]))]
     data = {"version": 1, "exercise": ex.name, "kind": "choice", "answer": right}
     got = verify.verdict(ex.name, data)
     assert got.status == "forged" and "kind 'choice'" in got.message

@@ -128,15 +128,14 @@ def identity(metadata, roster):
     >>> identity({"users": [{"email": " Bob@B.edu"}]}, Roster()).key
     'bob@b.edu'
     """
-    names = _aliases(metadata)
-    for field, name in names:
-        got = roster.resolve(name)
-        if got.how == "roster":
-            if field == names[0][0]:
-                return got
-            first = roster.resolve(names[0][1])
+    resolved = [(field, roster.resolve(name)) for field, name in _aliases(metadata)]
+    first = resolved[0][1] if resolved else roster.resolve("unknown-student")
+    for field, got in resolved:
+        if got.how == "roster" and got is first:
+            return got
+        if got.how == "roster":  # found by its sid or id, not by its e-mail: said in the note
             return replace(got, given=first.given, via=f"{field} {got.given}")
-    return roster.resolve(names[0][1] if names else "unknown-student")
+    return first
 
 
 def student_id(metadata):

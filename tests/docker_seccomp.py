@@ -31,6 +31,7 @@ import os
 import subprocess
 import sys
 import tempfile
+from pathlib import Path
 
 CLONE_NEW = {
     "CLONE_NEWNS": 0x00020000,
@@ -77,18 +78,41 @@ def _mount(*args):
     subprocess.run(["mount", *args], check=True)
 
 
+def _closed_ancestor(repo):
+    """The topmost folder above ``repo``, outside /root, that others may not pass (a checkout
+    in a ``mktemp -d`` folder, mode 0700), or None. On Gradescope the source's folders are
+    passable: the view opens this one as it opens /root."""
+    root = Path("/root")
+    closed = [
+        p
+        for p in Path(repo).parents
+        if p != Path("/") and p != root and root not in p.parents and not os.stat(p).st_mode & 1
+    ]
+    return str(closed[-1]) if closed else None
+
+
+def _reopen(folder, places, stash):
+    """``folder`` replaced by an empty tmpfs (mode 0755) into which only ``places`` (folders
+    under it) are mounted back."""
+    for n, place in enumerate(places):
+        os.makedirs(f"{stash}/keep{n}")
+        _mount("--rbind", place, f"{stash}/keep{n}")
+    _mount("-t", "tmpfs", "-o", "mode=0755", "tmpfs", folder)
+    for n, place in enumerate(places):
+        os.makedirs(place, exist_ok=True)
+        _mount("--move", f"{stash}/keep{n}", place)
+        os.rmdir(f"{stash}/keep{n}")
+
+
 def lay_out(repo, keep):
     """In this (private) mount namespace: /root emptied but for ``keep``; ``repo`` closed."""
     _mount("--make-rprivate", "/")
     stash = tempfile.mkdtemp(prefix="docker-view-")
     _mount("-t", "tmpfs", "-o", "mode=0700", "tmpfs", stash)
-    for n, folder in enumerate(keep):
-        os.makedirs(f"{stash}/keep{n}")
-        _mount("--rbind", folder, f"{stash}/keep{n}")
-    _mount("-t", "tmpfs", "-o", "mode=0755", "tmpfs", "/root")
-    for n, folder in enumerate(keep):
-        os.makedirs(folder, exist_ok=True)
-        _mount("--move", f"{stash}/keep{n}", folder)
+    closed = _closed_ancestor(repo)
+    if closed is not None:
+        _reopen(closed, [repo], stash)
+    _reopen("/root", keep, stash)
     os.makedirs(f"{stash}/upper")
     os.makedirs(f"{stash}/work")
     _mount("-t", "overlay", "overlay", "-o", f"lowerdir={repo},upperdir={stash}/upper,"
